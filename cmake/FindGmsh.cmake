@@ -1,0 +1,15 @@
+# Finds the gmsh C++ API (Debian ships no CMake config or pkg-config file for it).
+# Defines the imported target Gmsh::Gmsh and Gmsh_VERSION (from GMSH_API_VERSION in gmsh.h).
+find_path(GMSH_INCLUDE_DIR NAMES gmsh.h HINTS ENV GMSH_ROOT PATH_SUFFIXES include)
+find_library(GMSH_LIBRARY NAMES gmsh HINTS ENV GMSH_ROOT PATH_SUFFIXES lib lib64)
+if(GMSH_INCLUDE_DIR AND EXISTS "${GMSH_INCLUDE_DIR}/gmsh.h")
+  file(STRINGS "${GMSH_INCLUDE_DIR}/gmsh.h" _gmsh_version_line REGEX "^#define GMSH_API_VERSION \"[0-9.]+\"")
+  string(REGEX REPLACE ".*\"([0-9.]+)\".*" "\\1" Gmsh_VERSION "${_gmsh_version_line}")
+endif()
+include(FindPackageHandleStandardArgs)
+find_package_handle_standard_args(Gmsh REQUIRED_VARS GMSH_LIBRARY GMSH_INCLUDE_DIR VERSION_VAR Gmsh_VERSION)
+if(Gmsh_FOUND AND NOT TARGET Gmsh::Gmsh)
+  add_library(Gmsh::Gmsh UNKNOWN IMPORTED)
+  set_target_properties(Gmsh::Gmsh PROPERTIES IMPORTED_LOCATION "${GMSH_LIBRARY}"
+                        INTERFACE_INCLUDE_DIRECTORIES "${GMSH_INCLUDE_DIR}")
+endif()

@@ -1,0 +1,143 @@
+// Scene: the typed, validated description of one run, as read from a YAML file. Every value is SI
+// (m, kg, s, N, Pa, J, rad); config/scene_loader converts from the scene's unit system or from
+// values written with units ("157 GPa"). Material fields keep their LS-DYNA card names so a user can
+// carry a keyword card across. Nothing here depends on yaml-cpp.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace plyimpact::config {
+
+// Where a value came from, for messages that point the user at the right line.
+struct SourceLocation {
+  std::string file;
+  int line = 0;    // 1-based; 0 = unknown
+  int column = 0;  // 1-based
+  std::string key_path;  // e.g. "materials.ply.EA"
+};
+
+// *MAT_001 (*MAT_ELASTIC): isotropic, hypoelastic for solids.
+struct MatElastic {
+  double RO = 0, E = 0, PR = 0;
+};
+
+// Material axes as on LS-DYNA orthotropic cards (AOPT 0, 2, 3) plus the element/part angle BETA.
+struct MaterialAxes {
+  int AOPT = 0;                  // 0: element nodes 1-2-4; 2: global vectors A, D; 3: V x mid-surface normal
+  Vec3 A{1, 0, 0};               // AOPT 2
+  Vec3 D{0, 1, 0};               // AOPT 2
+  Vec3 V{1, 0, 0};               // AOPT 3
+  double BETA = 0;               // rad, rotation of a and b about c (MANGLE / BETA on the card)
+};
+
+// *MAT_002 (*MAT_ORTHOTROPIC_ELASTIC). PRBA = nu_ba (the minor ratio for a = fibre), as on the card.
+struct MatOrthotropicElastic {
+  double RO = 0, EA = 0, EB = 0, EC = 0, PRBA = 0, PRCA = 0, PRCB = 0, GAB = 0, GBC = 0, GCA = 0;
+  MaterialAxes axes;
+};
+
+struct MaterialSpec {
+  std::string name;
+  std::string card;  // "MAT_001" or "MAT_002" (LS-DYNA keyword number)
+  std::variant<MatElastic, MatOrthotropicElastic> params;
+  SourceLocation where;
+};
+
+// *SECTION_SOLID + *HOURGLASS: element formulation, hourglass control and bulk viscosity.
+struct SectionSpec {
+  std::string name;
+  int ELFORM = 1;     // 1: one-point with hourglass control; 2: 8-point selectively reduced
+  int IHQ = 2;        // 1,2,3 viscous; 4,5 stiffness (LS-DYNA explicit default for solids is 2)
+  double QM = 0.1;    // hourglass coefficient
+  double Q1 = 1.5;    // quadratic bulk viscosity coefficient
+  double Q2 = 0.06;   // linear bulk viscosity coefficient
+  SourceLocation where;
+};
+
+struct PartSpec {
+  std::string name;
+  int id = 0;               // 1-based, unique; written to output as part_id
+  std::string material;     // MaterialSpec::name
+  std::string section;      // SectionSpec::name
+  double beta = 0;          // rad: ply angle about the material c axis, added to the card's BETA
+  SourceLocation where;
+};
+
+// Structured block of hexahedra (the "box" generator): origin, edge lengths, element counts.
+struct BoxSpec {
+  std::string part;
+  Vec3 origin{0, 0, 0};
+  Vec3 size{1, 1, 1};
+  std::array<int, 3> elements{1, 1, 1};
+  SourceLocation where;
+};
+
+// Node selection. Exactly one of the selectors is used.
+struct NodeSetSpec {
+  enum class Kind { Box, Plane, Part, All };
+  std::string name;
+  Kind kind = Kind::All;
+  Vec3 box_min{0, 0, 0}, box_max{0, 0, 0};  // Box: closed, with tolerance
+  int plane_axis = 0;                        // Plane: 0=x 1=y 2=z
+  double plane_value = 0;
+  double tolerance = 0;  // m; 0 = automatic (1e-6 of the model size)
+  std::string part;      // Part
+  SourceLocation where;
+};
+
+// Piecewise-linear curve y(t); constant extrapolation outside the given range.
+struct CurveSpec {
+  std::vector<double> t, y;
+};
+
+struct BoundaryConditionSpec {
+  enum class Kind { Fixed, Velocity };
+  std::string node_set;
+  Kind kind = Kind::Fixed;
+  std::array<bool, 3> dofs{false, false, false};  // which of x, y, z the condition acts on
+  CurveSpec curve;      // Velocity: v(t) in m/s applied to every selected dof
+  SourceLocation where;
+};
+
+struct InitialVelocitySpec {
+  std::string part;      // either a part...
+  std::string node_set;  // ...or a node set (exactly one is non-empty)
+  Vec3 velocity{0, 0, 0};
+  SourceLocation where;
+};
+
+struct ControlSpec {
+  double termination_time = 0;  // s (required)
+  double tssfac = 0.9;          // *CONTROL_TIMESTEP TSSFAC
+  double dt_min_ratio = 1e-3;   // stop if dt < dt_min_ratio * dt0
+  double hourglass_warn_ratio = 0.1;  // warn when E_hg > ratio * E_int
+  long max_cycles = 0;          // 0 = no limit
+  int threads = 0;              // 0 = OpenMP default
+};
+
+struct OutputSpec {
+  double interval = 0;          // s between VTU frames; 0 = 20 frames over the run
+  double history_interval = 0;  // s between history.csv rows; 0 = 1000 rows over the run
+};
+
+struct Scene {
+  std::string name;       // scene file stem, used for the .pvd name
+  std::string file;       // path of the YAML file
+  std::string unit_system;  // as declared ("SI", "mm-t-s-MPa", "mm-kg-ms-GPa")
+  ControlSpec control;
+  OutputSpec output;
+  std::vector<MaterialSpec> materials;
+  std::vector<SectionSpec> sections;
+  std::vector<PartSpec> parts;
+  std::vector<BoxSpec> boxes;
+  std::vector<NodeSetSpec> node_sets;
+  std::vector<BoundaryConditionSpec> boundary_conditions;
+  std::vector<InitialVelocitySpec> initial_velocities;
+};
+
+}  // namespace plyimpact::config

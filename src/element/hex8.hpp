@@ -1,0 +1,59 @@
+// Kernels for the 8-node hexahedron: shape-function gradients (one-point and Flanagan-Belytschko
+// uniform gradient), volume, characteristic length, 2x2x2 Gauss gradients and hourglass shape
+// vectors. Local arrays are component-major, x[i][k] = coordinate i of local node k, so the loops
+// over the 8 nodes vectorise. Node order is LS-DYNA's (= VTK_HEXAHEDRON = gmsh): nodes 0-3 on
+// zeta = -1 counter-clockwise, 4-7 above them. References: Flanagan & Belytschko, IJNME 17 (1981)
+// 679-706 (FB81); LS-DYNA Theory Manual, "Solid Elements" and "Hourglass Control".
+#pragma once
+
+namespace plyimpact::element {
+
+inline constexpr double kXi[8] = {-1, 1, 1, -1, -1, 1, 1, -1};
+inline constexpr double kEta[8] = {-1, -1, 1, 1, -1, -1, 1, 1};
+inline constexpr double kZeta[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+
+// Hourglass base vectors Gamma_alpha (LS-DYNA Theory Manual table; xi*eta, eta*zeta, zeta*xi,
+// xi*eta*zeta patterns). Each is orthogonal to the constant vector and to xi, eta, zeta.
+inline constexpr double kGamma[4][8] = {
+    {1, -1, 1, -1, 1, -1, 1, -1},
+    {1, 1, -1, -1, -1, -1, 1, 1},
+    {1, -1, -1, 1, -1, 1, 1, -1},
+    {1, -1, 1, -1, -1, 1, -1, 1},
+};
+
+using NodeVec = double[3][8];  // component-major nodal values of one element
+
+// One-point gradient at the element centre: b[i][k] = dN_k/dx_i at xi=eta=zeta=0 and the
+// one-point volume 8*det(J0). Returns the volume (<= 0 means an inverted or collapsed element;
+// b is then not computed).
+double hex8_centroid_gradient(const NodeVec& x, NodeVec& b) noexcept;
+
+// Flanagan-Belytschko uniform (mean) gradient b_k = (1/V) dV/dx_k and the exact volume
+// V = (1/3) sum_k x_k . dV/dx_k (exact for any trilinear hexahedron). Returns V.
+double hex8_mean_gradient(const NodeVec& x, NodeVec& b) noexcept;
+
+// Exact volume only (same as hex8_mean_gradient's return value).
+double hex8_volume(const NodeVec& x) noexcept;
+
+// Largest face area of the element; faces of a warped hexahedron use |d1 x d2|/2 with the face
+// diagonals (LS-DYNA's characteristic length is volume / largest face area).
+double hex8_max_face_area(const NodeVec& x) noexcept;
+
+// Jacobian determinant at each of the 8 corners (the triple product of the three edges leaving the
+// corner, scaled to the reference cube). All must be > 0 for a valid element.
+void hex8_corner_jacobians(const NodeVec& x, double detj[8]) noexcept;
+
+// 2x2x2 Gauss point data for ELFORM 2: gradients B[g][i][k] and det J[g] (weights are 1).
+// Returns false if any det J <= 0.
+bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8]) noexcept;
+
+// Hourglass shape vectors gamma[a][k] = Gamma[a][k] - sum_i (Gamma_a . x_i) b[i][k] (FB81 eq. 3.x);
+// orthogonal to every linear field for any gradient b with sum_k x_k (x) b_k = I.
+void hex8_hourglass_shape(const NodeVec& x, const NodeVec& b, double gamma[4][8]) noexcept;
+
+// Small dense helpers on row-major 3x3 matrices.
+double det3(const double a[9]) noexcept;
+// Inverse of a; returns the determinant (the inverse is not written if it is 0).
+double inverse3(const double a[9], double inv[9]) noexcept;
+
+}  // namespace plyimpact::element

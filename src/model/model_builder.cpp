@@ -1,0 +1,252 @@
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/error.hpp"
+#include "element/hex8.hpp"
+#include "model/model.hpp"
+
+namespace plyimpact::model {
+
+namespace {
+
+msg at(const config::SourceLocation& w) {
+  msg m;
+  m << w.file << ":" << w.line << ":" << w.column << ": " << w.key_path << ": ";
+  return m;
+}
+
+Material make_material(const config::MaterialSpec& spec) {
+  Material m;
+  m.name = spec.name;
+  m.card = spec.card;
+  if (const auto* iso = std::get_if<config::MatElastic>(&spec.params)) {
+    m.kind = MaterialKind::IsotropicElastic;
+    m.density = iso->RO;
+    m.iso = material::isotropic_constants(*iso);
+    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
+  } else {
+    const auto& ortho = std::get<config::MatOrthotropicElastic>(spec.params);
+    m.kind = MaterialKind::OrthotropicElastic;
+    m.density = ortho.RO;
+    m.c_material = material::orthotropic_stiffness(ortho, spec.where);
+    m.wave_modulus = material::max_wave_modulus(m.c_material);
+    m.axes = ortho.axes;
+    if (m.axes.AOPT != 3 && m.axes.BETA != 0.0)
+      throw InputError(at(spec.where) << "BETA on the material card acts only with AOPT 3 (as in LS-DYNA); found "
+                                         "AOPT "
+                                      << m.axes.AOPT << "; give a ply angle with parts.<name>.beta instead");
+  }
+  m.wave_speed = std::sqrt(m.wave_modulus / m.density);
+  return m;
+}
+
+void gather_reference(const std::vector<double>& X, const Index* conn, double x[3][8]) {
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < 3; ++i) x[i][k] = X[3 * std::size_t(conn[k]) + i];
+}
+
+std::vector<Index> select_nodes(const config::NodeSetSpec& spec, const Model& model, double tol) {
+  std::vector<Index> nodes;
+  const std::size_t n = model.num_nodes();
+  if (spec.kind == config::NodeSetSpec::Kind::Part) {
+    std::vector<char> mark(n, 0);
+    for (const auto& part : model.parts)
+      if (part.name == spec.part)
+        for (Index node : model.blocks[part.block].conn) mark[node] = 1;
+    for (std::size_t i = 0; i < n; ++i)
+      if (mark[i]) nodes.push_back(Index(i));
+    return nodes;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* p = &model.X[3 * i];
+    bool in = true;
+    if (spec.kind == config::NodeSetSpec::Kind::Box) {
+      for (int d = 0; d < 3; ++d) in = in && p[d] >= spec.box_min[d] - tol && p[d] <= spec.box_max[d] + tol;
+    } else if (spec.kind == config::NodeSetSpec::Kind::Plane) {
+      in = std::abs(p[spec.plane_axis] - spec.plane_value) <= tol;
+    }
+    if (in) nodes.push_back(Index(i));
+  }
+  return nodes;
+}
+
+template <class T>
+int index_by_name(const std::vector<T>& items, const std::string& name) {
+  for (int i = 0; i < int(items.size()); ++i)
+    if (items[i].name == name) return i;
+  return -1;
+}
+
+}  // namespace
+
+double Curve::operator()(double time) const {
+  if (t.size() == 1 || time <= t.front()) return y.front();
+  if (time >= t.back()) return y.back();
+  const auto it = std::upper_bound(t.begin(), t.end(), time);
+  const std::size_t i = std::size_t(it - t.begin());
+  const double w = (time - t[i - 1]) / (t[i] - t[i - 1]);
+  return y[i - 1] + w * (y[i] - y[i - 1]);
+}
+
+std::size_t Model::num_elements() const {
+  std::size_t n = 0;
+  for (const auto& b : blocks) n += b.size();
+  return n;
+}
+
+Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
+  Model model;
+  model.name = scene.name;
+  model.control = scene.control;
+  model.output = scene.output;
+  model.X = mesh.coords;
+  const std::size_t num_nodes = mesh.num_nodes();
+
+  for (const auto& spec : scene.materials) model.materials.push_back(make_material(spec));
+
+  // One block per part, elements in mesh order.
+  for (const auto& ps : scene.parts) {
+    Part part;
+    part.id = ps.id;
+    part.name = ps.name;
+    part.section = ps.section;
+    part.material = index_by_name(scene.materials, ps.material);
+    const int section = index_by_name(scene.sections, ps.section);
+    if (part.material < 0 || section < 0)
+      throw InputError(at(ps.where) << "unknown material '" << ps.material << "' or section '" << ps.section << "'");
+    const auto& sec = scene.sections[section];
+    ElementBlock block;
+    block.part = int(model.parts.size());
+    block.material = part.material;
+    block.elform = sec.ELFORM;
+    block.ihq = sec.IHQ;
+    block.qm = sec.QM;
+    block.q1 = sec.Q1;
+    block.q2 = sec.Q2;
+    part.block = int(model.blocks.size());
+    model.blocks.push_back(std::move(block));
+    model.parts.push_back(part);
+  }
+  for (std::size_t e = 0; e < mesh.num_elements(); ++e) {
+    ElementBlock& block = model.blocks[model.parts[mesh.element_part[e]].block];
+    block.conn.insert(block.conn.end(), &mesh.hex[8 * e], &mesh.hex[8 * e] + 8);
+    block.element_id.push_back(Index(e + 1));
+  }
+
+  // Geometry checks, reference volumes, lumped masses and material orientations.
+  model.mass.assign(num_nodes, 0.0);
+  std::map<std::pair<int, std::array<double, 9>>, int> orientation_index;
+  for (auto& block : model.blocks) {
+    const Part& part = model.parts[block.part];
+    const Material& mat = model.materials[block.material];
+    const auto& part_spec = scene.parts[block.part];
+    block.volume0.resize(block.size());
+    if (mat.kind == MaterialKind::OrthotropicElastic) block.orientation.resize(block.size());
+    for (std::size_t e = 0; e < block.size(); ++e) {
+      double x[3][8];
+      gather_reference(model.X, &block.conn[8 * e], x);
+      double detj[8];
+      element::hex8_corner_jacobians(x, detj);
+      const double volume = element::hex8_volume(x);
+      for (int k = 0; k < 8; ++k)
+        if (!(detj[k] > 0.0) || !(volume > 0.0))
+          throw InputError(at(part_spec.where)
+                           << "element " << block.element_id[e] << " of part '" << part.name
+                           << "' has a zero or negative Jacobian at its corner node " << block.conn[8 * e + k] + 1
+                           << " (volume " << volume << " m^3); allowed: valid hexahedra with positive volume "
+                           << "(check node order and degenerate elements)");
+      block.volume0[e] = volume;
+      for (int k = 0; k < 8; ++k) model.mass[block.conn[8 * e + k]] += mat.density * volume / 8.0;
+      if (mat.kind == MaterialKind::OrthotropicElastic) {
+        const double beta = part_spec.beta + (mat.axes.AOPT == 3 ? mat.axes.BETA : 0.0);
+        const Mat3 axes = material::material_axes(mat.axes, beta, x);
+        const auto key = std::make_pair(block.material, axes);
+        auto it = orientation_index.find(key);
+        if (it == orientation_index.end()) {
+          Orientation o;
+          o.axes = axes;
+          o.c_global = material::rotate_to_global(mat.c_material, axes);
+          for (double v : o.c_global)
+            if (!std::isfinite(v))
+              throw InputError(at(scene.materials[block.material].where)
+                               << "material axes are undefined for element " << block.element_id[e]
+                               << " (AOPT " << mat.axes.AOPT << ": vector parallel to the normal?)");
+          it = orientation_index.emplace(key, int(model.orientations.size())).first;
+          model.orientations.push_back(o);
+        }
+        block.orientation[e] = it->second;
+      }
+    }
+  }
+
+  // Node sets.
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (std::size_t i = 0; i < num_nodes; ++i)
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], model.X[3 * i + d]);
+      hi[d] = std::max(hi[d], model.X[3 * i + d]);
+    }
+  const double size = std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                                (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  for (const auto& spec : scene.node_sets) {
+    const double tol = spec.tolerance > 0 ? spec.tolerance : 1e-6 * size;
+    NodeSet set{spec.name, select_nodes(spec, model, tol)};
+    if (set.nodes.empty())
+      throw InputError(at(spec.where) << "node set '" << spec.name << "' selects no node; the model spans x ["
+                                      << lo[0] << ", " << hi[0] << "] y [" << lo[1] << ", " << hi[1] << "] z ["
+                                      << lo[2] << ", " << hi[2] << "] m");
+    model.node_sets.push_back(std::move(set));
+  }
+
+  // Boundary conditions: one entry per constrained dof; the same dof constrained twice differently
+  // is an error rather than a silent override.
+  std::vector<int> dof_curve(3 * num_nodes, -2);  // -2 free, -1 fixed, >= 0 curve
+  for (const auto& bc : scene.boundary_conditions) {
+    const int set = index_by_name(model.node_sets, bc.node_set);
+    if (set < 0) throw InputError(at(bc.where) << "unknown node set '" << bc.node_set << "'");
+    if (std::find(model.constrained_sets.begin(), model.constrained_sets.end(), set) == model.constrained_sets.end())
+      model.constrained_sets.push_back(set);
+    int curve = -1;
+    if (bc.kind == config::BoundaryConditionSpec::Kind::Velocity) {
+      curve = int(model.curves.size());
+      model.curves.push_back(Curve{bc.curve.t, bc.curve.y});
+    }
+    for (Index node : model.node_sets[set].nodes)
+      for (int d = 0; d < 3; ++d) {
+        if (!bc.dofs[d]) continue;
+        int& slot = dof_curve[3 * std::size_t(node) + d];
+        if (slot != -2 && !(slot == -1 && curve == -1))
+          throw InputError(at(bc.where) << "node " << node + 1 << " dof " << "xyz"[d]
+                                        << " already has another boundary condition; allowed: one condition per dof");
+        slot = curve;
+      }
+  }
+  for (std::size_t i = 0; i < dof_curve.size(); ++i)
+    if (dof_curve[i] != -2) model.constraints.push_back({Index(i), dof_curve[i]});
+
+  // Initial velocities.
+  model.v0.assign(3 * num_nodes, 0.0);
+  for (const auto& iv : scene.initial_velocities) {
+    std::vector<Index> nodes;
+    if (!iv.part.empty()) {
+      const int p = index_by_name(model.parts, iv.part);
+      if (p < 0) throw InputError(at(iv.where) << "unknown part '" << iv.part << "'");
+      config::NodeSetSpec spec;
+      spec.kind = config::NodeSetSpec::Kind::Part;
+      spec.part = iv.part;
+      nodes = select_nodes(spec, model, 0);
+    } else {
+      const int s = index_by_name(model.node_sets, iv.node_set);
+      if (s < 0) throw InputError(at(iv.where) << "unknown node set '" << iv.node_set << "'");
+      nodes = model.node_sets[s].nodes;
+    }
+    for (Index node : nodes)
+      for (int d = 0; d < 3; ++d) model.v0[3 * std::size_t(node) + d] = iv.velocity[d];
+  }
+
+  model.schedule = make_schedule(model.blocks, num_nodes);
+  return model;
+}
+
+}  // namespace plyimpact::model

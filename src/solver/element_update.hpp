@@ -1,0 +1,30 @@
+// Element pass: for a range of one block's elements, from the current coordinates x^{n+1} and
+// velocities v^{n+1/2}, update the stresses to t^{n+1}, add the internal, bulk-viscous and
+// hourglass forces to the nodal force array, accumulate element energies and find the element
+// stable time step. One template instance per (formulation, material, hourglass) combination; the
+// dispatch happens once per chunk, never per element.
+#pragma once
+
+#include <limits>
+
+#include "model/model.hpp"
+#include "solver/state.hpp"
+
+namespace plyimpact::solver {
+
+struct ChunkResult {
+  double internal_energy = 0;     // J added in this pass
+  double hourglass_energy = 0;
+  double bulk_viscous_energy = 0;
+  double dt_min = std::numeric_limits<double>::infinity();  // smallest element step (no TSSFAC)
+  Index dt_element = -1;          // its element id
+  Index bad_element = -1;         // first element with a non-positive volume or non-finite result
+  double bad_volume = 0;
+  bool bad_is_nan = false;
+};
+
+// dt: Delta t^{n+1/2} (0 for the initial evaluation, which changes no stress).
+void update_elements(const model::Model& model, const model::ElementBlock& block, BlockState& state, Index begin,
+                     Index end, const double* x, const double* v, double* f, double dt, ChunkResult& result);
+
+}  // namespace plyimpact::solver

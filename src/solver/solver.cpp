@@ -1,0 +1,209 @@
+#include "solver/solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+
+namespace plyimpact::solver {
+
+namespace {
+constexpr std::size_t kNodeChunk = 4096;  // fixed (not per thread) so sums do not depend on threads
+}
+
+Solver::Solver(const model::Model& model) : model_(model) {
+  const std::size_t n = model.num_nodes();
+  state_.x = model.X;
+  state_.v = model.v0;
+  state_.f.assign(3 * n, 0.0);
+  inverse_mass_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) inverse_mass_[i] = model.mass[i] > 0 ? 1.0 / model.mass[i] : 0.0;
+  state_.blocks.resize(model.blocks.size());
+  for (std::size_t b = 0; b < model.blocks.size(); ++b) {
+    const auto& blk = model.blocks[b];
+    auto& st = state_.blocks[b];
+    st.stress.assign(6 * blk.size() * blk.points(), 0.0);
+    if (blk.hourglass() == model::HourglassKind::Stiffness) st.hourglass.assign(12 * blk.size(), 0.0);
+    st.internal_energy.assign(blk.size(), 0.0);
+    st.hourglass_energy.assign(blk.size(), 0.0);
+    st.volume = blk.volume0;
+  }
+  dof_constraint_.assign(3 * n, -1);
+  for (std::size_t c = 0; c < model.constraints.size(); ++c) dof_constraint_[model.constraints[c].dof] = int(c);
+  constraint_force_.assign(model.constraints.size(), 0.0);
+  constraint_work_.assign(model.constraints.size(), 0.0);
+  curve_value_.assign(model.curves.size(), 0.0);
+  chunk_results_.resize(model.schedule.chunks.size());
+  node_chunk_ke_.assign((n + kNodeChunk - 1) / kNodeChunk, 0.0);
+  for (int set : model.constrained_sets) {
+    std::vector<int> list;
+    for (Index node : model.node_sets[set].nodes)
+      for (int d = 0; d < 3; ++d)
+        if (dof_constraint_[3 * std::size_t(node) + d] >= 0) list.push_back(dof_constraint_[3 * std::size_t(node) + d]);
+    set_constraints_.push_back(std::move(list));
+  }
+  state_.reaction.assign(3 * model.constrained_sets.size(), 0.0);
+
+  // Initial velocities obey the boundary conditions at t = 0.
+  for (std::size_t c = 0; c < model.constraints.size(); ++c) {
+    const auto& con = model.constraints[c];
+    state_.v[con.dof] = con.curve < 0 ? 0.0 : model.curves[con.curve](0.0);
+  }
+  element_pass(0.0);
+  check_after_pass(0.0);
+  state_.dt_initial = state_.dt_next_half;
+
+  double ke = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < 3; ++d) ke += 0.5 * model.mass[i] * state_.v[3 * i + d] * state_.v[3 * i + d];
+  state_.last_balance = Energies{0.0, ke, 0.0, 0.0, 0.0, 0.0};
+  state_.initial_total_energy = ke;
+}
+
+void Solver::step() {
+  State& s = state_;
+  const double dt_half = s.dt_next_half;
+  const double dt_n = 0.5 * (s.dt_prev_half + dt_half);
+  const bool first = s.cycle == 0;
+  for (std::size_t c = 0; c < model_.curves.size(); ++c) curve_value_[c] = model_.curves[c](s.time + 0.5 * dt_half);
+
+  // Node update: v^{n+1/2}, constraints, kinetic energy at t^n, x^{n+1}.
+  const std::size_t n = model_.num_nodes();
+  const long num_chunks = long(node_chunk_ke_.size());
+  double* __restrict x = s.x.data();
+  double* __restrict v = s.v.data();
+  const double* __restrict f = s.f.data();
+  const double* __restrict mass = model_.mass.data();
+  const double* __restrict inv_mass = inverse_mass_.data();
+#pragma omp parallel for schedule(static)
+  for (long chunk = 0; chunk < num_chunks; ++chunk) {
+    const std::size_t begin = std::size_t(chunk) * kNodeChunk, end = std::min(n, begin + kNodeChunk);
+    double ke = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      const double m = mass[i], im = inv_mass[i];
+      for (int d = 0; d < 3; ++d) {
+        const std::size_t dof = 3 * i + d;
+        const double vo = v[dof];
+        double vn = vo + dt_n * f[dof] * im;
+        const int c = dof_constraint_[dof];
+        if (c >= 0) {
+          const int curve = model_.constraints[c].curve;
+          const double vb = curve < 0 ? 0.0 : curve_value_[curve];
+          const double reaction = m * (vb - vn) / dt_n;
+          constraint_force_[c] = reaction;
+          constraint_work_[c] = dt_n * reaction * 0.5 * (vo + vb);
+          vn = vb;
+        }
+        const double vm = first ? vo : 0.5 * (vo + vn);
+        ke += 0.5 * m * vm * vm;
+        v[dof] = vn;
+        x[dof] += dt_half * vn;
+      }
+    }
+    node_chunk_ke_[chunk] = ke;
+  }
+  double ke = 0;
+  for (double k : node_chunk_ke_) ke += k;
+  for (double w : constraint_work_) s.external_work += w;
+  for (std::size_t set = 0; set < set_constraints_.size(); ++set) {
+    double r[3] = {0, 0, 0};
+    for (int c : set_constraints_[set]) r[model_.constraints[c].dof % 3] += constraint_force_[c];
+    for (int d = 0; d < 3; ++d) s.reaction[3 * set + d] = r[d];
+  }
+  s.last_balance = Energies{s.time, ke, s.internal_energy, s.hourglass_energy, s.bulk_viscous_energy, s.external_work};
+  if (!std::isfinite(ke))
+    throw RunError(msg() << "non-finite kinetic energy at cycle " << s.cycle << ", time " << s.time
+                         << " s: a nodal velocity became NaN or infinite (unstable run; check the time step, "
+                            "hourglass coefficient and boundary conditions)");
+
+  s.time += dt_half;
+  element_pass(dt_half);
+  s.dt_prev_half = dt_half;
+  ++s.cycle;
+  check_after_pass(dt_half);
+}
+
+void Solver::element_pass(double dt) {
+  State& s = state_;
+  std::fill(s.f.begin(), s.f.end(), 0.0);
+  const auto& schedule = model_.schedule;
+  const double* x = s.x.data();
+  const double* v = s.v.data();
+  double* f = s.f.data();
+#pragma omp parallel
+  {
+    for (const auto& color : schedule.colors) {
+#pragma omp for schedule(dynamic, 1)
+      for (std::size_t i = 0; i < color.size(); ++i) {
+        const int c = color[i];
+        const auto& chunk = schedule.chunks[c];
+        chunk_results_[c] = ChunkResult{};
+        update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], chunk.begin, chunk.end, x, v, f,
+                        dt, chunk_results_[c]);
+      }
+    }
+  }
+}
+
+void Solver::check_after_pass(double dt_used) {
+  State& s = state_;
+  ChunkResult total;
+  for (const auto& r : chunk_results_) {  // chunk order: deterministic whatever the thread count
+    total.internal_energy += r.internal_energy;
+    total.hourglass_energy += r.hourglass_energy;
+    total.bulk_viscous_energy += r.bulk_viscous_energy;
+    if (r.dt_element >= 0 && (r.dt_min < total.dt_min || (r.dt_min == total.dt_min && r.dt_element < total.dt_element))) {
+      total.dt_min = r.dt_min;
+      total.dt_element = r.dt_element;
+    }
+    if (r.bad_element >= 0 && (total.bad_element < 0 || r.bad_element < total.bad_element)) {
+      total.bad_element = r.bad_element;
+      total.bad_volume = r.bad_volume;
+      total.bad_is_nan = r.bad_is_nan;
+    }
+  }
+  s.internal_energy += total.internal_energy;
+  s.hourglass_energy += total.hourglass_energy;
+  s.bulk_viscous_energy += total.bad_element >= 0 ? 0.0 : total.bulk_viscous_energy;
+  if (total.bad_element >= 0) {
+    if (total.bad_is_nan)
+      throw RunError(msg() << "element " << total.bad_element << " (part '" << part_of_element(total.bad_element)
+                           << "') produced a non-finite stress or time step at cycle " << s.cycle << ", time "
+                           << s.time << " s (unstable run)");
+    throw RunError(msg() << "element " << total.bad_element << " (part '" << part_of_element(total.bad_element)
+                         << "') has zero or negative volume (" << total.bad_volume << " m^3) at cycle " << s.cycle
+                         << ", time " << s.time << " s after a step of " << dt_used
+                         << " s: the element inverted (excessive distortion, hourglassing or a too large step)");
+  }
+  if (total.dt_element < 0) throw RunError("the model has no deformable element, so no stable time step exists");
+  s.dt_next_half = model_.control.tssfac * total.dt_min;
+  s.dt_element = total.dt_element;
+  if (s.dt_initial > 0 && s.dt_next_half < model_.control.dt_min_ratio * s.dt_initial)
+    throw RunError(msg() << "time step collapsed to " << s.dt_next_half << " s, below " << model_.control.dt_min_ratio
+                         << " x the initial " << s.dt_initial << " s, at cycle " << s.cycle << ", time " << s.time
+                         << " s; controlling element " << s.dt_element << " (part '" << part_of_element(s.dt_element)
+                         << "') is severely distorted");
+}
+
+double Solver::energy_ratio() const {
+  const Energies& e = state_.last_balance;
+  const double reference = state_.initial_total_energy + e.external_work;
+  if (reference == 0.0) return e.total() == 0.0 ? 1.0 : std::numeric_limits<double>::infinity();
+  return e.total() / reference;
+}
+
+std::vector<double> Solver::acceleration() const {
+  std::vector<double> a(state_.f.size());
+  for (std::size_t i = 0; i < a.size(); ++i) a[i] = state_.f[i] * inverse_mass_[i / 3];
+  for (const auto& con : model_.constraints) a[con.dof] = 0.0;  // constrained dofs follow their curve
+  return a;
+}
+
+std::string Solver::part_of_element(Index id) const {
+  for (const auto& blk : model_.blocks)
+    if (!blk.element_id.empty() && std::binary_search(blk.element_id.begin(), blk.element_id.end(), id))
+      return model_.parts[blk.part].name;
+  return "?";
+}
+
+}  // namespace plyimpact::solver

@@ -1,0 +1,46 @@
+// State: everything that changes during a run — nodal kinematics, element stresses and hourglass
+// forces, energies, time and step sizes. Plain contiguous arrays (structure of arrays), so a state
+// can be written to and read back from a restart file and split by a domain decomposition later.
+// Time levels: x, time at t^n; v at t^{n-1/2} before a step and t^{n+1/2} after it.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace plyimpact::solver {
+
+struct BlockState {
+  std::vector<double> stress;            // (num_elements * points, 6) Cauchy, global axes, xx yy zz xy yz zx
+  std::vector<double> hourglass;         // (num_elements, 12) stiffness hourglass forces Q[i*4+alpha] (IHQ 4, 5)
+  std::vector<double> internal_energy;   // (num_elements) J, stress work incl. nothing of q
+  std::vector<double> hourglass_energy;  // (num_elements) J
+  std::vector<double> volume;            // (num_elements) current volume, m^3 (updated every cycle)
+};
+
+// Global energy balance at one time (J). total = kinetic + internal + hourglass + bulk_viscous;
+// ratio = total / (initial total + external work), 1 for a perfect balance.
+struct Energies {
+  double time = 0;
+  double kinetic = 0, internal = 0, hourglass = 0, bulk_viscous = 0, external_work = 0;
+  double total() const { return kinetic + internal + hourglass + bulk_viscous; }
+};
+
+struct State {
+  double time = 0;
+  long cycle = 0;
+  double dt_prev_half = 0;   // Delta t^{n-1/2}
+  double dt_next_half = 0;   // Delta t^{n+1/2} (stable step for the coming cycle, TSSFAC applied)
+  double dt_initial = 0;     // first stable step, reference for the collapse check
+  Index dt_element = -1;     // id of the element controlling dt_next_half
+  std::vector<double> x, v, f;  // (num_nodes, 3)
+  std::vector<BlockState> blocks;
+  // Cumulative energies (internal/hourglass/bulk at t^n, after the last element pass).
+  double internal_energy = 0, hourglass_energy = 0, bulk_viscous_energy = 0, external_work = 0;
+  double initial_total_energy = 0;
+  Energies last_balance;           // the balance at the start of the last step (t^n)
+  std::vector<double> reaction;    // (num constrained sets, 3) constraint force resultant, N
+};
+
+}  // namespace plyimpact::solver
