@@ -104,13 +104,18 @@ void Solver::step() {
   }
   double ke = 0;
   for (double k : node_chunk_ke_) ke += k;
-  for (double w : constraint_work_) s.external_work += w;
+  // The constraint work of this step spans t^{n-1/2}..t^{n+1/2}; half of it belongs before t^n,
+  // where the kinetic energy is evaluated (average of the half-step velocities).
+  double work = 0;
+  for (double w : constraint_work_) work += w;
+  const double external_work_at_n = s.external_work + 0.5 * work;
+  s.external_work += work;
   for (std::size_t set = 0; set < set_constraints_.size(); ++set) {
     double r[3] = {0, 0, 0};
     for (int c : set_constraints_[set]) r[model_.constraints[c].dof % 3] += constraint_force_[c];
     for (int d = 0; d < 3; ++d) s.reaction[3 * set + d] = r[d];
   }
-  s.last_balance = Energies{s.time, ke, s.internal_energy, s.hourglass_energy, s.bulk_viscous_energy, s.external_work};
+  s.last_balance = Energies{s.time, ke, s.internal_energy, s.hourglass_energy, s.bulk_viscous_energy, external_work_at_n};
   if (!std::isfinite(ke))
     throw RunError(msg() << "non-finite kinetic energy at cycle " << s.cycle << ", time " << s.time
                          << " s: a nodal velocity became NaN or infinite (unstable run; check the time step, "

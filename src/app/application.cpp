@@ -1,0 +1,156 @@
+#include "app/application.hpp"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "config/scene_loader.hpp"
+#include "core/error.hpp"
+#include "mesh/mesh.hpp"
+#include "model/model.hpp"
+#include "model/subsystems.hpp"
+#include "solver/run.hpp"
+#include "solver/solver.hpp"
+
+namespace plyimpact::app {
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: plyimpact <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  run SCENE.yaml [-o DIR]   run the scene; results go to DIR (default results/<scene>):\n"
+    "                            <scene>.pvd + VTU frames (open the .pvd in ParaView), history.csv,\n"
+    "                            summary.json\n"
+    "  check SCENE.yaml          validate the scene and print the model summary, active subsystems,\n"
+    "                            stable time step and cost estimate; writes nothing\n"
+    "  --help                    this text\n"
+    "  --version                 program version\n"
+    "\n"
+    "exit codes: 0 success, 1 invalid scene, 2 run stopped early (see summary.json), 64 bad usage\n";
+
+struct Loaded {
+  config::Scene scene;
+  model::Model model;
+};
+
+Loaded load(const std::string& path) {
+  Loaded l;
+  l.scene = config::load_scene(path);
+  l.model = model::build_model(l.scene, mesh::mesh_boxes(l.scene));
+  return l;
+}
+
+std::size_t memory_estimate(const model::Model& m) {
+  std::size_t bytes = (m.X.size() + m.mass.size() + m.v0.size()) * sizeof(double);
+  bytes += 3 * m.num_nodes() * 3 * sizeof(double) + 3 * m.num_nodes() * sizeof(int) + m.num_nodes() * sizeof(double);
+  for (const auto& b : m.blocks) {
+    bytes += b.conn.size() * sizeof(Index) + b.size() * (sizeof(Index) + sizeof(int) + sizeof(double));
+    bytes += b.size() * (6 * b.points() + (b.hourglass() == model::HourglassKind::Stiffness ? 12 : 0) + 3) * sizeof(double);
+  }
+  return bytes;
+}
+
+int check(const std::string& path, std::ostream& out) {
+  const Loaded l = load(path);
+  const model::Model& m = l.model;
+  const solver::Solver solver(m);  // evaluates the initial stable step
+  char buf[256];
+  out << "plyimpact check: " << path << ": scene is valid\n";
+  out << "  units: " << l.scene.unit_system << " (internally SI)\n";
+  out << "  nodes: " << m.num_nodes() << ", elements: " << m.num_elements() << "\n";
+  out << "  parts:\n";
+  for (const auto& p : m.parts) {
+    const auto& b = m.blocks[p.block];
+    out << "    " << p.id << " " << p.name << ": " << b.size() << " elements, " << m.materials[p.material].card << " '"
+        << m.materials[p.material].name << "', section '" << p.section << "' ELFORM " << b.elform;
+    if (b.elform == 1) out << " IHQ " << b.ihq << " QM " << b.qm;
+    out << ", Q1 " << b.q1 << " Q2 " << b.q2 << "\n";
+  }
+  out << "  materials:\n";
+  for (const auto& mat : m.materials) {
+    std::snprintf(buf, sizeof buf, "    %s (%s): density %.6g kg/m^3, max wave speed %.6g m/s\n", mat.name.c_str(),
+                  mat.card.c_str(), mat.density, mat.wave_speed);
+    out << buf;
+  }
+  out << "  subsystems:\n";
+  for (const auto& s : model::subsystems(m)) out << "    [" << (s.active ? "on " : "off") << "] " << s.name << ": " << s.detail << "\n";
+  const auto& st = solver.state();
+  std::snprintf(buf, sizeof buf, "  stable time step: %.6g s (TSSFAC %.3g applied), controlling element %d (part '%s')\n",
+                st.dt_next_half, m.control.tssfac, int(st.dt_element), solver.part_of_element(st.dt_element).c_str());
+  out << buf;
+  const double cycles = std::ceil(m.control.termination_time / st.dt_next_half);
+  std::snprintf(buf, sizeof buf, "  termination time %.6g s: about %.0f cycles, %.3g element-cycles\n",
+                m.control.termination_time, cycles, cycles * double(m.num_elements()));
+  out << buf;
+  std::snprintf(buf, sizeof buf, "  memory estimate: %.1f MiB\n", memory_estimate(m) / 1048576.0);
+  out << buf;
+  return 0;
+}
+
+int run(const std::string& path, const std::string& out_dir, std::ostream& out) {
+  const Loaded l = load(path);
+  solver::RunOptions options;
+  options.output_dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
+  options.progress = &out;
+  options.progress_in_place = (&out == &std::cout) && isatty(STDOUT_FILENO);
+  out << "plyimpact " << PLYIMPACT_VERSION << ": running " << path << " (" << l.model.num_nodes() << " nodes, "
+      << l.model.num_elements() << " elements)\n";
+  const solver::RunReport r = solver::run_model(l.model, options);
+  for (const auto& w : r.warnings) out << "warning: " << w << "\n";
+  char buf[256];
+  std::snprintf(buf, sizeof buf, "%s at t = %.6g s after %ld cycles, %.2f s wall, %.1f ns per element-cycle, energy ratio %.4f\n",
+                r.completed ? "completed" : "STOPPED", r.end_time, r.cycles, r.wall_seconds, r.ns_per_element_cycle,
+                r.energy_ratio);
+  out << buf;
+  out << "results: " << r.pvd.string() << " (open in ParaView), " << r.history.string() << ", " << r.summary.string() << "\n";
+  if (!r.completed) {
+    out << "stopped: " << r.stop_reason << "\n";
+    return 2;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int run_application(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  try {
+    if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+      (args.empty() ? err : out) << kUsage;
+      return args.empty() ? 64 : 0;
+    }
+    if (args[0] == "--version") {
+      out << "plyimpact " << PLYIMPACT_VERSION << "\n";
+      return 0;
+    }
+    if ((args[0] == "run" || args[0] == "check") && args.size() >= 2) {
+      std::string out_dir;
+      for (std::size_t i = 2; i < args.size(); ++i) {
+        if ((args[i] == "-o" || args[i] == "--output") && i + 1 < args.size() && args[0] == "run") {
+          out_dir = args[++i];
+        } else {
+          err << "plyimpact: unexpected argument '" << args[i] << "'\n" << kUsage;
+          return 64;
+        }
+      }
+      return args[0] == "run" ? run(args[1], out_dir, out) : check(args[1], out);
+    }
+    err << "plyimpact: unknown command or missing scene file\n" << kUsage;
+    return 64;
+  } catch (const InputError& e) {
+    err << "error: " << e.what() << "\n";
+    return 1;
+  } catch (const RunError& e) {
+    err << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    err << "error: " << e.what() << "\n";
+    return 2;
+  }
+}
+
+}  // namespace plyimpact::app

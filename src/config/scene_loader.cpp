@@ -1,0 +1,433 @@
+// Scene loader: one small function per YAML section on top of detail::Reader. See scene_loader.hpp.
+#include "config/scene_loader.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "config/yaml_reader.hpp"
+#include "core/error.hpp"
+
+namespace plyimpact::config {
+namespace {
+
+using detail::Limits;
+using detail::Reader;
+namespace u = units;
+
+template <class Spec>
+std::vector<std::string> names_of(const std::vector<Spec>& specs) {
+  std::vector<std::string> out;
+  for (const auto& s : specs) out.push_back(s.name);
+  return out;
+}
+
+std::string fmt(double v) { return msg() << v; }
+
+// ---------------------------------------------------------------- control / output
+
+ControlSpec read_control(const Reader& r) {
+  r.require_map("a mapping with termination_time and optional tssfac, dt_min_ratio, ...");
+  r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "hourglass_warn_ratio", "max_cycles", "threads"});
+  ControlSpec c;
+  c.termination_time = r.quantity("termination_time", u::time, Limits::positive("termination time"));
+  c.tssfac = r.quantity_or("tssfac", u::dimensionless, c.tssfac, Limits::interval(0, true, 1, false, "tssfac"));
+  c.dt_min_ratio =
+      r.quantity_or("dt_min_ratio", u::dimensionless, c.dt_min_ratio, Limits::interval(0, true, 1, true, "dt_min_ratio"));
+  c.hourglass_warn_ratio = r.quantity_or("hourglass_warn_ratio", u::dimensionless, c.hourglass_warn_ratio,
+                                         Limits::positive("hourglass_warn_ratio"));
+  c.max_cycles = r.integer_or("max_cycles", c.max_cycles, Limits::non_negative("max_cycles"));
+  c.threads = static_cast<int>(r.integer_or("threads", c.threads, Limits::interval(0, false, 4096, false, "threads")));
+  return c;
+}
+
+OutputSpec read_output(const Reader& r) {
+  r.require_map("a mapping with optional interval and history_interval (times)");
+  r.allow_keys({"interval", "history_interval"});
+  OutputSpec o;
+  o.interval = r.quantity_or("interval", u::time, 0.0, Limits::non_negative("output interval"));
+  o.history_interval = r.quantity_or("history_interval", u::time, 0.0, Limits::non_negative("history interval"));
+  return o;
+}
+
+// ---------------------------------------------------------------- materials
+
+std::string read_card(const Reader& r) {
+  const std::string allowed = "MAT_001 (ELASTIC) or MAT_002 (ORTHOTROPIC_ELASTIC)";
+  const Reader c = r.at("card", allowed);
+  c.require_scalar(allowed);
+  std::string s = c.node().Scalar();
+  if (!s.empty() && s.front() == '*') s.erase(0, 1);
+  for (char& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  if (s == "MAT_001" || s == "MAT_ELASTIC" || s == "ELASTIC") return "MAT_001";
+  if (s == "MAT_002" || s == "MAT_ORTHOTROPIC_ELASTIC" || s == "ORTHOTROPIC_ELASTIC") return "MAT_002";
+  c.fail("unknown material card", allowed);
+}
+
+MatElastic read_elastic(const Reader& r) {
+  r.allow_keys({"card", "RO", "E", "PR"});
+  MatElastic m;
+  m.RO = r.quantity("RO", u::density, Limits::positive("density"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus"));
+  m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
+  return m;
+}
+
+MaterialAxes read_axes(const Reader& r) {
+  MaterialAxes a;
+  a.AOPT = r.int_choice_or("AOPT", 0, {0, 2, 3});
+  auto nonzero_vec = [&](std::string_view key, Vec3 fallback) {
+    const auto v = r.find(key);
+    if (!v) return fallback;
+    const Vec3 x = v->as_vec3(u::dimensionless);
+    if (x[0] == 0 && x[1] == 0 && x[2] == 0) v->fail("the vector must not be zero", "a non-zero direction [x, y, z]");
+    return x;
+  };
+  a.A = nonzero_vec("A", a.A);
+  a.D = nonzero_vec("D", a.D);
+  a.V = nonzero_vec("V", a.V);
+  if (a.AOPT == 2) {
+    const Vec3 c{a.A[1] * a.D[2] - a.A[2] * a.D[1], a.A[2] * a.D[0] - a.A[0] * a.D[2],
+                 a.A[0] * a.D[1] - a.A[1] * a.D[0]};
+    const double na = std::hypot(a.A[0], a.A[1], a.A[2]), nd = std::hypot(a.D[0], a.D[1], a.D[2]);
+    if (std::hypot(c[0], c[1], c[2]) <= 1e-10 * na * nd) {
+      const auto d = r.find("D");
+      (d ? *d : r).fail("with AOPT 2 the vectors A and D must not be parallel", "D not parallel to A");
+    }
+  }
+  a.BETA = r.angle_or("BETA", 0.0);
+  return a;
+}
+
+MatOrthotropicElastic read_orthotropic(const Reader& r) {
+  r.allow_keys({"card", "RO", "EA", "EB", "EC", "PRBA", "PRCA", "PRCB", "GAB", "GBC", "GCA", "AOPT", "A", "D", "V",
+                "BETA"});
+  MatOrthotropicElastic m;
+  m.RO = r.quantity("RO", u::density, Limits::positive("density"));
+  m.EA = r.quantity("EA", u::stress, Limits::positive("EA"));
+  m.EB = r.quantity("EB", u::stress, Limits::positive("EB"));
+  m.EC = r.quantity("EC", u::stress, Limits::positive("EC"));
+  m.PRBA = r.quantity("PRBA", u::dimensionless);
+  m.PRCA = r.quantity("PRCA", u::dimensionless);
+  m.PRCB = r.quantity("PRCB", u::dimensionless);
+  m.GAB = r.quantity("GAB", u::stress, Limits::positive("GAB"));
+  m.GBC = r.quantity("GBC", u::stress, Limits::positive("GBC"));
+  m.GCA = r.quantity("GCA", u::stress, Limits::positive("GCA"));
+  // Minor ratios nu_ji (load along i, contraction along j, j the stiffer axis on a fibre ply):
+  // |nu_ij| < sqrt(E_i/E_j); the major ratio is nu_ji * E_j / E_i.
+  auto check = [&](std::string_view key, double nu, const char* ei, double e_i, const char* ej, double e_j) {
+    const double bound = std::sqrt(e_i / e_j);
+    if (std::abs(nu) < bound) return;
+    r.at(key, "").fail(msg() << "|" << key << "| must be < sqrt(" << ei << "/" << ej << ") = " << fmt(bound)
+                             << " (minor Poisson ratio; the major ratio would be " << key << "*" << ej << "/" << ei
+                             << " = " << fmt(nu * e_j / e_i) << "; if you entered the major ratio, use "
+                             << fmt(nu * e_i / e_j) << ")",
+                       msg() << "|" << key << "| < " << fmt(bound));
+  };
+  check("PRBA", m.PRBA, "EB", m.EB, "EA", m.EA);
+  check("PRCA", m.PRCA, "EC", m.EC, "EA", m.EA);
+  check("PRCB", m.PRCB, "EC", m.EC, "EB", m.EB);
+  m.axes = read_axes(r);
+  return m;
+}
+
+std::vector<MaterialSpec> read_materials(const Reader& r) {
+  r.require_map("a mapping of material name -> card (e.g. steel: {card: MAT_001, RO: ..., E: ..., PR: ...})");
+  if (r.node().size() == 0) r.fail("at least one material is needed", "a mapping of material name -> card");
+  std::vector<MaterialSpec> out;
+  for (const auto& [name, m] : r.entries()) {
+    m.require_map("a material card: a mapping with card, RO and the card's constants");
+    MaterialSpec spec{name, read_card(m), {}, m.where()};
+    if (spec.card == "MAT_001")
+      spec.params = read_elastic(m);
+    else
+      spec.params = read_orthotropic(m);
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- sections and parts
+
+std::vector<SectionSpec> read_sections(const Reader& r) {
+  r.require_map("a mapping of section name -> {ELFORM, IHQ, QM, Q1, Q2}");
+  if (r.node().size() == 0) r.fail("at least one section is needed", "a mapping of section name -> section");
+  std::vector<SectionSpec> out;
+  for (const auto& [name, s] : r.entries()) {
+    s.require_map("a mapping with optional ELFORM, IHQ, QM, Q1, Q2 (use {} for all defaults)");
+    s.allow_keys({"ELFORM", "IHQ", "QM", "Q1", "Q2"});
+    SectionSpec spec;
+    spec.name = name;
+    spec.ELFORM = s.int_choice_or("ELFORM", spec.ELFORM, {1, 2});
+    spec.IHQ = s.int_choice_or("IHQ", spec.IHQ, {1, 2, 3, 4, 5});
+    spec.QM = s.quantity_or("QM", u::dimensionless, spec.QM, Limits::interval(0, true, 0.5, false, "QM"));
+    spec.Q1 = s.quantity_or("Q1", u::dimensionless, spec.Q1, Limits::non_negative("Q1"));
+    spec.Q2 = s.quantity_or("Q2", u::dimensionless, spec.Q2, Limits::non_negative("Q2"));
+    spec.where = s.where();
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+std::vector<PartSpec> read_parts(const Reader& r, const Scene& scene) {
+  r.require_map("a mapping of part name -> {material, section, id, beta}");
+  if (r.node().size() == 0) r.fail("at least one part is needed", "a mapping of part name -> part");
+  const auto materials = names_of(scene.materials), sections = names_of(scene.sections);
+  std::vector<PartSpec> out;
+  std::map<long, std::string> ids;
+  for (const auto& [name, p] : r.entries()) {
+    p.require_map("a mapping with material, section and optional id, beta");
+    p.allow_keys({"id", "material", "section", "beta"});
+    PartSpec spec;
+    spec.name = name;
+    const long id = p.integer_or("id", static_cast<long>(out.size()) + 1,
+                                 Limits::interval(1, false, 2147483647.0, false, "part id"));
+    if (const auto [it, fresh] = ids.emplace(id, name); !fresh) {
+      const auto at = p.find("id");
+      (at ? *at : p).fail(msg() << "duplicate part id " << id << " (already used by part '" << it->second << "')",
+                          "a part id not used by another part");
+    }
+    spec.id = static_cast<int>(id);
+    spec.material = p.reference("material", materials, "material", "materials");
+    spec.section = p.reference("section", sections, "section", "sections");
+    spec.beta = p.angle_or("beta", 0.0);
+    spec.where = p.where();
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- mesh
+
+std::vector<BoxSpec> read_mesh(const Reader& r, const Scene& scene) {
+  r.require_map("a mapping with 'boxes'");
+  r.allow_keys({"boxes"});
+  const Reader boxes = r.at("boxes", "a list of boxes {part, origin, size, elements}");
+  boxes.require_list("a list of boxes {part, origin, size, elements}", true);
+  const auto parts = names_of(scene.parts);
+  std::vector<BoxSpec> out;
+  for (const Reader& b : boxes.items()) {
+    b.require_map("a box: {part, origin, size, elements}");
+    b.allow_keys({"part", "origin", "size", "elements"});
+    BoxSpec spec;
+    spec.part = b.reference("part", parts, "part", "parts");
+    spec.origin = b.vec3_or("origin", u::length, spec.origin);
+    spec.size = b.vec3("size", u::length, Limits::positive("box size"));
+    const Reader e = b.at("elements", "a list [nx, ny, nz] of integers >= 1");
+    e.require_list("a list [nx, ny, nz] of integers >= 1", false);
+    if (e.node().size() != 3) e.fail("expected exactly 3 element counts", "a list [nx, ny, nz] of integers >= 1");
+    const auto counts = e.items();
+    for (int i = 0; i < 3; ++i)
+      spec.elements[i] = static_cast<int>(counts[i].as_integer(Limits::at_least(1, "element count")));
+    spec.where = b.where();
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- node sets
+
+int read_axis(const Reader& r) {
+  const std::string a = r.as_choice({"x", "y", "z"});
+  return a == "x" ? 0 : a == "y" ? 1 : 2;
+}
+
+std::vector<NodeSetSpec> read_node_sets(const Reader& r, const Scene& scene) {
+  const char* selectors = "exactly one selector: {plane: {axis, value, tolerance}}, {box: {min, max}}, {part: name} or all";
+  r.require_map("a mapping of node set name -> selector");
+  const auto parts = names_of(scene.parts);
+  std::vector<NodeSetSpec> out;
+  for (const auto& [name, s] : r.entries()) {
+    NodeSetSpec spec;
+    spec.name = name;
+    spec.where = s.where();
+    if (s.node().IsScalar()) {
+      if (s.node().Scalar() != "all") s.fail("unknown node selector", selectors);
+      spec.kind = NodeSetSpec::Kind::All;
+      out.push_back(std::move(spec));
+      continue;
+    }
+    s.require_map(selectors);
+    s.allow_keys({"plane", "box", "part"});
+    const std::string kind = s.exactly_one({"plane", "box", "part"});
+    if (kind == "plane") {
+      const Reader p = s.at("plane", "");
+      p.require_map("{axis: x|y|z, value: <length>, tolerance: <length>}");
+      p.allow_keys({"axis", "value", "tolerance"});
+      spec.kind = NodeSetSpec::Kind::Plane;
+      spec.plane_axis = read_axis(p.at("axis", "one of x, y, z"));
+      spec.plane_value = p.quantity("value", u::length);
+      spec.tolerance = p.quantity_or("tolerance", u::length, 0.0, Limits::non_negative("tolerance"));
+    } else if (kind == "box") {
+      const Reader b = s.at("box", "");
+      b.require_map("{min: [x, y, z], max: [x, y, z]}");
+      b.allow_keys({"min", "max"});
+      spec.kind = NodeSetSpec::Kind::Box;
+      spec.box_min = b.vec3("min", u::length);
+      spec.box_max = b.vec3("max", u::length);
+      const auto max_items = b.at("max", "").items();
+      for (int i = 0; i < 3; ++i)
+        if (spec.box_max[i] < spec.box_min[i])
+          max_items[i].fail(msg() << "box max must be >= min (min is " << fmt(spec.box_min[i]) << " m)",
+                            msg() << "a value >= " << fmt(spec.box_min[i]) << " m");
+    } else {
+      spec.kind = NodeSetSpec::Kind::Part;
+      spec.part = s.reference("part", parts, "part", "parts");
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- boundary and initial conditions
+
+std::array<bool, 3> read_dofs(const Reader& r) {
+  const char* allowed = "a non-empty list of distinct dofs from x, y, z (e.g. [x, z])";
+  r.require_list(allowed, true);
+  std::array<bool, 3> dofs{false, false, false};
+  for (const Reader& d : r.items()) {
+    const int axis = read_axis(d);
+    if (dofs[axis]) d.fail("dof listed twice", allowed);
+    dofs[axis] = true;
+  }
+  return dofs;
+}
+
+CurveSpec read_curve(const Reader& r) {
+  const char* allowed = "a list of [time, velocity] pairs with strictly increasing times";
+  r.require_list(allowed, true);
+  CurveSpec c;
+  for (const Reader& pt : r.items()) {
+    pt.require_list("a pair [time, velocity]", false);
+    if (pt.node().size() != 2) pt.fail("expected a pair [time, velocity]", "a pair [time, velocity]");
+    const auto tv = pt.items();
+    const double t = tv[0].as_quantity(u::time);
+    if (!c.t.empty() && !(t > c.t.back()))
+      tv[0].fail(msg() << "curve times must be strictly increasing (previous time " << fmt(c.t.back()) << " s)",
+                 msg() << "a time > " << fmt(c.t.back()) << " s");
+    c.t.push_back(t);
+    c.y.push_back(tv[1].as_quantity(u::velocity));
+  }
+  return c;
+}
+
+std::vector<BoundaryConditionSpec> read_bcs(const Reader& r, const Scene& scene) {
+  r.require_list("a list of {node_set, fix: [dofs]} or {node_set, velocity: {dofs, value | curve}}", false);
+  const auto sets = names_of(scene.node_sets);
+  std::vector<BoundaryConditionSpec> out;
+  for (const Reader& b : r.items()) {
+    b.require_map("{node_set, fix: [dofs]} or {node_set, velocity: {dofs, value | curve}}");
+    b.allow_keys({"node_set", "fix", "velocity"});
+    BoundaryConditionSpec spec;
+    spec.node_set = b.reference("node_set", sets, "node set", "node_sets");
+    spec.where = b.where();
+    if (b.exactly_one({"fix", "velocity"}) == "fix") {
+      spec.kind = BoundaryConditionSpec::Kind::Fixed;
+      spec.dofs = read_dofs(b.at("fix", ""));
+    } else {
+      const Reader v = b.at("velocity", "");
+      v.require_map("{dofs: [x, y, z], value: <velocity>} or {dofs: [...], curve: [[t, v], ...]}");
+      v.allow_keys({"dofs", "value", "curve"});
+      spec.kind = BoundaryConditionSpec::Kind::Velocity;
+      spec.dofs = read_dofs(v.at("dofs", "a list of dofs from x, y, z"));
+      if (v.exactly_one({"value", "curve"}) == "value")
+        spec.curve = CurveSpec{{0.0}, {v.quantity("value", u::velocity)}};
+      else
+        spec.curve = read_curve(v.at("curve", ""));
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+std::vector<InitialVelocitySpec> read_initial_velocities(const Reader& r, const Scene& scene) {
+  r.require_list("a list of {part | node_set, velocity: [vx, vy, vz]}", false);
+  const auto parts = names_of(scene.parts), sets = names_of(scene.node_sets);
+  std::vector<InitialVelocitySpec> out;
+  for (const Reader& iv : r.items()) {
+    iv.require_map("{part: name, velocity: [vx, vy, vz]} or {node_set: name, velocity: [...]}");
+    iv.allow_keys({"part", "node_set", "velocity"});
+    InitialVelocitySpec spec;
+    if (iv.exactly_one({"part", "node_set"}) == "part")
+      spec.part = iv.reference("part", parts, "part", "parts");
+    else
+      spec.node_set = iv.reference("node_set", sets, "node set", "node_sets");
+    spec.velocity = iv.vec3("velocity", u::velocity);
+    spec.where = iv.where();
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------- whole scene
+
+Scene read_scene(const Reader& root, detail::Context& ctx) {
+  const char* top = "a mapping with units, control, materials, sections, parts, mesh and optional output, "
+                    "node_sets, boundary_conditions, initial_velocity";
+  if (!root.node().IsDefined() || root.node().IsNull()) root.fail("the scene is empty", top);
+  root.require_map(top);
+  root.allow_keys({"units", "control", "output", "materials", "sections", "parts", "mesh", "node_sets",
+                   "boundary_conditions", "initial_velocity"});
+  Scene scene;
+  const Reader units_node = root.at("units", u::allowed_unit_systems());
+  units_node.require_scalar(u::allowed_unit_systems());
+  try {
+    ctx.unit_system = u::parse_unit_system(units_node.node().Scalar());
+  } catch (const u::UnitError& e) {
+    units_node.fail(e.problem(), e.allowed());
+  }
+  scene.unit_system = ctx.unit_system.name;
+  scene.control = read_control(root.at("control", "a mapping with termination_time and optional tssfac, ..."));
+  if (const auto o = root.find("output")) scene.output = read_output(*o);
+  scene.materials = read_materials(root.at("materials", "a mapping of material name -> card"));
+  scene.sections = read_sections(root.at("sections", "a mapping of section name -> {ELFORM, IHQ, QM, Q1, Q2}"));
+  scene.parts = read_parts(root.at("parts", "a mapping of part name -> {material, section}"), scene);
+  scene.boxes = read_mesh(root.at("mesh", "a mapping with 'boxes'"), scene);
+  if (const auto n = root.find("node_sets")) scene.node_sets = read_node_sets(*n, scene);
+  if (const auto b = root.find("boundary_conditions")) scene.boundary_conditions = read_bcs(*b, scene);
+  if (const auto iv = root.find("initial_velocity")) scene.initial_velocities = read_initial_velocities(*iv, scene);
+  return scene;
+}
+
+}  // namespace
+
+Scene load_scene_from_string(const std::string& yaml_text, const std::string& file_label) {
+  detail::Context ctx{file_label, {}};
+  Scene scene;
+  try {
+    YAML::Node root;
+    try {
+      root = YAML::Load(yaml_text);
+    } catch (const YAML::Exception& e) {
+      throw InputError(msg() << detail::location(file_label, e.mark) << ": YAML syntax error: " << e.msg
+                             << "; found text that is not valid YAML here (or on the line before)"
+                             << "; allowed a YAML mapping (check indentation, ':' after keys, closing ] and })");
+    }
+    YAML::Mark start;  // 1:1
+    scene = read_scene(Reader(root, "", &ctx, start), ctx);
+  } catch (const YAML::Exception& e) {  // should not happen: Reader checks types before access
+    throw InputError(msg() << detail::location(file_label, e.mark) << ": internal YAML error: " << e.msg);
+  }
+  scene.file = file_label;
+  scene.name = std::filesystem::path(file_label).stem().string();
+  return scene;
+}
+
+Scene load_scene(const std::string& path) {
+  std::error_code ec;
+  std::ifstream in;
+  if (!std::filesystem::is_directory(path, ec)) in.open(path, std::ios::binary);
+  if (!in.is_open())
+    throw InputError(msg() << path << ": cannot open the scene file; found no readable file at this path"
+                           << "; allowed a path to an existing .yaml scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(msg() << path << ": error while reading the scene file");
+  return load_scene_from_string(text.str(), path);
+}
+
+}  // namespace plyimpact::config

@@ -1,0 +1,42 @@
+#include "model/subsystems.hpp"
+
+#include <set>
+#include <sstream>
+
+namespace plyimpact::model {
+
+std::vector<Subsystem> subsystems(const Model& model) {
+  std::vector<Subsystem> list;
+  list.push_back({"explicit_dynamics", true, "central difference, lumped mass, Courant step x TSSFAC"});
+
+  std::set<int> ihq;
+  bool elform2 = false, viscosity = false;
+  std::set<std::string> cards;
+  for (const auto& b : model.blocks) {
+    if (b.size() == 0) continue;
+    if (b.elform == 1) ihq.insert(b.ihq); else elform2 = true;
+    viscosity = viscosity || b.q1 > 0 || b.q2 > 0;
+    cards.insert(model.materials[b.material].card);
+  }
+  std::ostringstream hg;
+  for (int i : ihq) hg << (hg.tellp() > 0 ? ", " : "IHQ ") << i;
+  list.push_back({"hourglass_control", !ihq.empty(), ihq.empty() ? "no one-point (ELFORM 1) element" : hg.str()});
+  list.push_back({"fully_integrated_elements", elform2, elform2 ? "ELFORM 2, selectively reduced" : "no ELFORM 2 part"});
+  list.push_back({"bulk_viscosity", viscosity, viscosity ? "compression only, Q1/Q2 per section" : "Q1 = Q2 = 0"});
+  std::ostringstream mats;
+  for (const auto& c : cards) mats << (mats.tellp() > 0 ? ", " : "") << c;
+  list.push_back({"materials", true, mats.str()});
+  list.push_back({"material_axes", !model.orientations.empty(),
+                  model.orientations.empty() ? "no orthotropic material"
+                                             : std::to_string(model.orientations.size()) + " orientation(s)"});
+  std::size_t fixed = 0, prescribed = 0;
+  for (const auto& c : model.constraints) (c.curve < 0 ? fixed : prescribed)++;
+  list.push_back({"boundary_conditions", !model.constraints.empty(),
+                  std::to_string(fixed) + " fixed dof, " + std::to_string(prescribed) + " prescribed-velocity dof"});
+  list.push_back({"contact", false, "left out: the scene defines no contact, so no contact surface or search is built"});
+  list.push_back({"delamination", false, "left out: no tiebreak interface, so no interface node is duplicated"});
+  list.push_back({"erosion", false, "left out: no material with a failure criterion"});
+  return list;
+}
+
+}  // namespace plyimpact::model

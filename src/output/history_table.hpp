@@ -1,0 +1,39 @@
+// Time-history table (energies, contact force, deflection ... one row per output step) written as
+// CSV for regression gold files and plotting. Rows live in one contiguous row-major vector so
+// appending a row in the time loop allocates only when the vector grows (call reserve() to avoid
+// even that). The CSV is replaced atomically, so a plot script never reads a torn file.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace plyimpact::output {
+
+class HistoryTable {
+ public:
+  /// Column names, in order; at least one, none empty.
+  explicit HistoryTable(std::vector<std::string> columns);
+
+  /// Appends one row; `values.size()` must equal the number of columns (else plyimpact::RunError).
+  void add_row(std::span<const double> values);
+  void reserve(std::size_t rows) { values_.reserve(rows * columns_.size()); }
+
+  // columns_ is only empty in a moved-from table.
+  std::size_t rows() const { return columns_.empty() ? 0 : values_.size() / columns_.size(); }
+  const std::vector<std::string>& columns() const { return columns_; }
+  /// Row-major, shape (rows(), columns().size()).
+  std::span<const double> values() const { return values_; }
+
+  /// Atomically writes a header line and one line per row, values as %.10g; NaN is written as
+  /// "nan" and infinities as "inf"/"-inf" (strtod and numpy read both back).
+  void write_csv(const std::filesystem::path& path) const;
+
+ private:
+  std::vector<std::string> columns_;
+  std::vector<double> values_;
+};
+
+}  // namespace plyimpact::output

@@ -1,0 +1,204 @@
+#include "solver/run.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <ostream>
+
+#include "core/error.hpp"
+#include "model/subsystems.hpp"
+#include "output/history_table.hpp"
+#include "output/json.hpp"
+#include "output/pvd_series.hpp"
+#include "output/vtu_writer.hpp"
+#include "solver/frame_builder.hpp"
+#include "solver/solver.hpp"
+
+namespace plyimpact::solver {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+std::vector<std::string> history_columns(const model::Model& model) {
+  std::vector<std::string> cols = {"time",         "dt",    "kinetic_energy", "internal_energy",
+                                   "hourglass_energy", "bulk_viscous_energy", "external_work",
+                                   "total_energy", "energy_ratio", "dt_element"};
+  for (int set : model.constrained_sets)
+    for (const char* c : {"_fx", "_fy", "_fz"}) cols.push_back("reaction_" + model.node_sets[set].name + c);
+  return cols;
+}
+
+void add_history_row(const Solver& solver, output::HistoryTable& table) {
+  const State& s = solver.state();
+  const Energies& e = solver.balance();
+  std::vector<double> row = {e.time,     s.dt_prev_half, e.kinetic,       e.internal,           e.hourglass,
+                             e.bulk_viscous, e.external_work, e.total(), solver.energy_ratio(), double(s.dt_element)};
+  row.insert(row.end(), s.reaction.begin(), s.reaction.end());
+  table.add_row(row);
+}
+
+std::string format_seconds(double s) {
+  char buf[32];
+  if (s < 60) std::snprintf(buf, sizeof buf, "%.1fs", s);
+  else std::snprintf(buf, sizeof buf, "%dm%02ds", int(s / 60), int(s) % 60);
+  return buf;
+}
+
+}  // namespace
+
+RunReport run_model(const model::Model& model, const RunOptions& options) {
+  const auto t_start = Clock::now();
+  if (model.control.threads > 0) omp_set_num_threads(model.control.threads);
+  std::filesystem::create_directories(options.output_dir);
+  RunReport report;
+  const std::string& name = model.name;
+  report.pvd = options.output_dir / (name + ".pvd");
+  report.history = options.output_dir / "history.csv";
+  report.summary = options.output_dir / "summary.json";
+
+  const double t_end = model.control.termination_time;
+  const double frame_interval = model.output.interval > 0 ? model.output.interval : t_end / 20;
+  const double history_interval = model.output.history_interval > 0 ? model.output.history_interval : t_end / 1000;
+  output::PvdSeries pvd(options.output_dir, name);
+  output::HistoryTable history(history_columns(model));
+  double solver_seconds = 0;
+  long solver_cycles = 0;
+  double max_hourglass_ratio = 0;
+
+  auto write_frame = [&](const Solver& solver) {
+    char file[64];
+    std::snprintf(file, sizeof file, "_%04zu.vtu", pvd.size());
+    const std::string vtu = name + file;
+    output::write_vtu(make_frame(solver), options.output_dir / vtu);
+    pvd.add(solver.state().time, vtu);
+    pvd.write();
+    history.write_csv(report.history);
+  };
+
+  auto write_summary = [&](const Solver* solver) {
+    output::Json j = output::Json::object();
+    j["scene"] = name;
+    j["version"] = PLYIMPACT_VERSION;
+    j["status"] = report.completed ? "completed" : "stopped";
+    j["stop_reason"] = report.stop_reason;
+    j["cycles"] = report.cycles;
+    j["end_time"] = report.end_time;
+    j["termination_time"] = t_end;
+    j["wall_seconds"] = seconds_since(t_start);
+    j["nodes"] = std::uint64_t(model.num_nodes());
+    j["elements"] = std::uint64_t(model.num_elements());
+    j["threads"] = omp_get_max_threads();
+    j["ns_per_element_cycle"] = report.ns_per_element_cycle;
+    output::Json subs = output::Json::object();
+    for (const auto& s : model::subsystems(model)) {
+      output::Json entry = output::Json::object();
+      entry["active"] = s.active;
+      entry["detail"] = s.detail;
+      subs[s.name] = entry;
+    }
+    j["subsystems"] = subs;
+    if (solver) {
+      const Energies& e = solver->balance();
+      output::Json en = output::Json::object();
+      en["time"] = e.time;
+      en["kinetic"] = e.kinetic;
+      en["internal"] = e.internal;
+      en["hourglass"] = e.hourglass;
+      en["bulk_viscous"] = e.bulk_viscous;
+      en["external_work"] = e.external_work;
+      en["total"] = e.total();
+      en["energy_ratio"] = solver->energy_ratio();
+      j["final_energies"] = en;
+      j["time_step"] = solver->state().dt_next_half;
+      j["controlling_element"] = solver->state().dt_element;
+    }
+    output::Json warnings = output::Json::array();
+    for (const auto& w : report.warnings) warnings.push_back(w);
+    j["warnings"] = warnings;
+    j["files"] = output::Json::object();
+    j["files"]["pvd"] = report.pvd.filename().string();
+    j["files"]["history"] = report.history.filename().string();
+    output::write_json_atomically(report.summary, j);
+  };
+
+  std::unique_ptr<Solver> solver;
+  try {
+    solver = std::make_unique<Solver>(model);
+    add_history_row(*solver, history);
+    write_frame(*solver);
+    double next_frame = frame_interval, next_history = history_interval, next_progress = 0;
+    const long max_cycles = model.control.max_cycles;
+    while (solver->state().time < t_end * (1 - 1e-12) && (max_cycles <= 0 || solver->state().cycle < max_cycles)) {
+      State& s = solver->state();
+      if (s.time + s.dt_next_half > t_end) s.dt_next_half = t_end - s.time;  // land on the end time
+      const auto t0 = Clock::now();
+      solver->step();
+      solver_seconds += seconds_since(t0);
+      ++solver_cycles;
+      const double t = s.time;
+      if (t >= next_history * (1 - 1e-12) && solver->balance().time > 0) {
+        add_history_row(*solver, history);
+        next_history += history_interval * std::max(1.0, std::floor((t - next_history) / history_interval) + 1);
+        const Energies& e = solver->balance();
+        if (e.internal > 0) max_hourglass_ratio = std::max(max_hourglass_ratio, e.hourglass / e.internal);
+      }
+      const bool last = t >= t_end * (1 - 1e-12);
+      if (t >= next_frame * (1 - 1e-12) || last) {
+        write_frame(*solver);
+        next_frame += frame_interval * std::max(1.0, std::floor((t - next_frame) / frame_interval) + 1);
+      }
+      const double wall = seconds_since(t_start);
+      if (options.progress && (wall >= next_progress || last)) {
+        const double pct = 100.0 * t / t_end;
+        const double eta = pct > 0 ? wall * (100.0 - pct) / pct : 0.0;
+        char line[200];
+        std::snprintf(line, sizeof line, "t %.4e s (%5.1f%%)  cycle %ld  dt %.3e s  wall %s  ETA %s  energy ratio %.4f",
+                      t, pct, s.cycle, s.dt_prev_half, format_seconds(wall).c_str(), format_seconds(eta).c_str(),
+                      solver->energy_ratio());
+        if (options.progress_in_place) {
+          *options.progress << '\r' << line << "\033[K" << std::flush;
+          next_progress = wall + 0.2;
+        } else {
+          *options.progress << line << '\n' << std::flush;
+          next_progress = wall + 10.0;
+        }
+      }
+    }
+    if (options.progress && options.progress_in_place) *options.progress << '\n';
+    report.completed = solver->state().time >= t_end * (1 - 1e-12);
+    if (!report.completed) report.stop_reason = "max_cycles reached before the termination time";
+  } catch (const RunError& e) {
+    report.completed = false;
+    report.stop_reason = e.what();
+    if (options.progress && options.progress_in_place) *options.progress << '\n';
+  }
+  if (solver) {
+    report.cycles = solver->state().cycle;
+    report.end_time = solver->state().time;
+    report.energy_ratio = solver->energy_ratio();
+  }
+  const double element_cycles = double(model.num_elements()) * double(solver_cycles);
+  report.ns_per_element_cycle = element_cycles > 0 ? 1e9 * solver_seconds / element_cycles : 0.0;
+  if (max_hourglass_ratio > model.control.hourglass_warn_ratio) {
+    char w[200];
+    std::snprintf(w, sizeof w, "hourglass energy reached %.1f%% of the internal energy (limit %.1f%%): refine the mesh, "
+                  "use ELFORM 2 or a stiffness hourglass form", 100 * max_hourglass_ratio,
+                  100 * model.control.hourglass_warn_ratio);
+    report.warnings.push_back(w);
+  }
+  if (solver && std::abs(report.energy_ratio - 1.0) > 0.05)
+    report.warnings.push_back("energy ratio " + std::to_string(report.energy_ratio) + " differs from 1 by more than 5%");
+  history.write_csv(report.history);
+  report.wall_seconds = seconds_since(t_start);
+  write_summary(solver.get());
+  return report;
+}
+
+}  // namespace plyimpact::solver

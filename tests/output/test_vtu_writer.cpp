@@ -1,0 +1,283 @@
+// write_vtu: what VTK's own reader gets back is bit-for-bit the Frame that was written (raw binary
+// appended data), in both the raw and zlib modes; bad frames and bad paths fail loudly and cleanly.
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkErrorCode.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "output/vtu_writer.hpp"
+
+namespace fs = std::filesystem;
+using plyimpact::RunError;
+using plyimpact::output::Field;
+using plyimpact::output::Frame;
+using plyimpact::output::IntField;
+using plyimpact::output::write_vtu;
+using plyimpact::output::WriteOptions;
+
+namespace {
+
+class ScratchDir {
+ public:
+  ScratchDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
+    std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Suite/Test/param"
+    path_ = fs::temp_directory_path() /
+            ("plyimpact_output_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+  std::vector<std::string> entries() const {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename());
+    return names;
+  }
+
+ private:
+  fs::path path_;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Values with full 53-bit mantissas, so a lossy (ASCII or float) path would show.
+std::vector<double> awkward_values(std::size_t n, double scale) {
+  std::vector<double> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = scale * (std::sin(1.0 + static_cast<double>(i)) + 1.0 / 3.0);
+  return v;
+}
+
+// Two hexes sharing a face: a 3 x 2 x 2 lattice of nodes, node = i + 3 j + 6 k.
+Frame two_hex_frame() {
+  Frame f;
+  f.time = 1.2345678901234567e-4;
+  f.cycle = 4242;
+  for (int k = 0; k < 2; ++k) {
+    for (int j = 0; j < 2; ++j) {
+      for (int i = 0; i < 3; ++i) {
+        f.points.insert(f.points.end(), {0.1 * i + 1e-7 / 3.0, 0.2 * j, 0.3 * k + 1e-9});
+      }
+    }
+  }
+  f.hex_connectivity = {0, 1, 4, 3, 6, 7, 10, 9, 1, 2, 5, 4, 7, 8, 11, 10};
+  const std::vector<std::string> voigt{"xx", "yy", "zz", "xy", "yz", "zx"};
+  f.point_fields.push_back({"temperature", 1, awkward_values(12, 300.0), {}});
+  f.point_fields.push_back({"velocity", 3, awkward_values(36, -12.5), {"x", "y", "z"}});
+  f.point_fields.push_back({"point_stress", 6, awkward_values(72, 1e8), voigt});
+  f.cell_fields.push_back({"damage", 1, {0.0, 0.75}, {}});
+  f.cell_fields.push_back({"fibre_direction", 3, awkward_values(6, 1.0), {}});
+  f.cell_fields.push_back({"stress", 6, awkward_values(12, -3e9), voigt});
+  f.point_int_fields.push_back({"node_id", {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, -11}});
+  f.cell_int_fields.push_back({"ply_id", {3, 2147483647}});
+  return f;
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> read_vtu(const fs::path& p) {
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(p.c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetErrorCode(), vtkErrorCode::NoError);
+  return reader->GetOutput();
+}
+
+// Exact comparisons on purpose: the data goes through raw binary, so every bit must survive.
+void expect_field(vtkDataSetAttributes* data, const Field& f) {
+  SCOPED_TRACE(f.name);
+  auto* a = vtkDoubleArray::SafeDownCast(data->GetAbstractArray(f.name.c_str()));
+  ASSERT_NE(a, nullptr) << "missing or not double";
+  ASSERT_EQ(a->GetNumberOfComponents(), f.components);
+  ASSERT_EQ(static_cast<std::size_t>(a->GetNumberOfValues()), f.values.size());
+  for (std::size_t i = 0; i < f.values.size(); ++i) {
+    EXPECT_EQ(a->GetValue(static_cast<vtkIdType>(i)), f.values[i]) << "value " << i;
+  }
+  for (std::size_t c = 0; c < f.component_names.size(); ++c) {
+    const char* name = a->GetComponentName(static_cast<vtkIdType>(c));
+    ASSERT_NE(name, nullptr) << "component " << c;
+    EXPECT_EQ(std::string(name), f.component_names[c]);
+  }
+}
+
+void expect_int_field(vtkDataSetAttributes* data, const IntField& f) {
+  SCOPED_TRACE(f.name);
+  auto* a = vtkIntArray::SafeDownCast(data->GetAbstractArray(f.name.c_str()));
+  ASSERT_NE(a, nullptr) << "missing or not int";
+  ASSERT_EQ(static_cast<std::size_t>(a->GetNumberOfValues()), f.values.size());
+  for (std::size_t i = 0; i < f.values.size(); ++i) {
+    EXPECT_EQ(a->GetValue(static_cast<vtkIdType>(i)), f.values[i]);
+  }
+}
+
+void expect_same_as_frame(vtkUnstructuredGrid* grid, const Frame& f) {
+  ASSERT_NE(grid, nullptr);
+  ASSERT_EQ(static_cast<std::size_t>(grid->GetNumberOfPoints()), f.num_points());
+  ASSERT_EQ(grid->GetPoints()->GetDataType(), VTK_DOUBLE);
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p) {
+    double x[3];
+    grid->GetPoint(p, x);
+    for (int d = 0; d < 3; ++d) EXPECT_EQ(x[d], f.points[3 * p + d]) << "point " << p;
+  }
+  ASSERT_EQ(static_cast<std::size_t>(grid->GetNumberOfCells()), f.num_cells());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    EXPECT_EQ(grid->GetCellType(c), VTK_HEXAHEDRON);
+    grid->GetCellPoints(c, ids);
+    ASSERT_EQ(ids->GetNumberOfIds(), 8);
+    for (vtkIdType n = 0; n < 8; ++n) {
+      EXPECT_EQ(ids->GetId(n), f.hex_connectivity[8 * c + n]) << "cell " << c << " node " << n;
+    }
+  }
+  for (const Field& field : f.point_fields) expect_field(grid->GetPointData(), field);
+  for (const Field& field : f.cell_fields) expect_field(grid->GetCellData(), field);
+  for (const IntField& field : f.point_int_fields) expect_int_field(grid->GetPointData(), field);
+  for (const IntField& field : f.cell_int_fields) expect_int_field(grid->GetCellData(), field);
+  EXPECT_EQ(grid->GetPointData()->GetNumberOfArrays(),
+            static_cast<int>(f.point_fields.size() + f.point_int_fields.size()));
+  EXPECT_EQ(grid->GetCellData()->GetNumberOfArrays(),
+            static_cast<int>(f.cell_fields.size() + f.cell_int_fields.size()));
+
+  auto* time = vtkDoubleArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("TimeValue"));
+  ASSERT_NE(time, nullptr);
+  ASSERT_EQ(time->GetNumberOfValues(), 1);
+  EXPECT_EQ(time->GetValue(0), f.time);
+}
+
+class VtuRoundTrip : public ::testing::TestWithParam<bool> {};
+
+}  // namespace
+
+TEST_P(VtuRoundTrip, ReaderGetsBackEveryValueExactly) {
+  ScratchDir dir;
+  const Frame frame = two_hex_frame();
+  const fs::path file = dir.path() / "plate_000001.vtu";
+  WriteOptions options;
+  options.compress = GetParam();
+  write_vtu(frame, file, options);
+
+  expect_same_as_frame(read_vtu(file), frame);
+
+  // Appended raw binary with 64-bit block headers (toolchain V6); zlib only when asked for.
+  const std::string text = slurp(file);
+  EXPECT_NE(text.find("header_type=\"UInt64\""), std::string::npos);
+  EXPECT_NE(text.find("<AppendedData encoding=\"raw\">"), std::string::npos);
+  EXPECT_EQ(text.find("format=\"ascii\""), std::string::npos);
+  EXPECT_EQ(text.find("vtkZLibDataCompressor") != std::string::npos, options.compress);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"plate_000001.vtu"});
+}
+
+INSTANTIATE_TEST_SUITE_P(RawAndZlib, VtuRoundTrip, ::testing::Values(false, true),
+                         [](const auto& info) { return info.param ? "zlib" : "raw"; });
+
+TEST(VtuWriter, EmptyFrameIsAValidFile) {
+  ScratchDir dir;
+  Frame frame;
+  frame.time = 0.5;
+  write_vtu(frame, dir.path() / "empty.vtu");
+  expect_same_as_frame(read_vtu(dir.path() / "empty.vtu"), frame);
+}
+
+TEST(VtuWriter, MissingDirectoryThrowsNamingPathAndLeavesNothing) {
+  ScratchDir dir;
+  const fs::path file = dir.path() / "missing" / "frame.vtu";
+  try {
+    write_vtu(two_hex_frame(), file);
+    FAIL() << "expected RunError";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+    EXPECT_NE(what.find("No such file or directory"), std::string::npos) << what;
+  }
+  EXPECT_FALSE(fs::exists(file));
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(VtuWriter, OverwritesExistingFileAtomically) {
+  ScratchDir dir;
+  const fs::path file = dir.path() / "frame.vtu";
+  std::ofstream(file) << "not a vtu file";
+  Frame frame = two_hex_frame();
+  write_vtu(frame, file);
+  frame.time = 2.0;
+  frame.points[0] = -1.0;
+  write_vtu(frame, file);
+  expect_same_as_frame(read_vtu(file), frame);
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{"frame.vtu"});
+}
+
+TEST(VtuWriter, FieldSizeMismatchThrowsNamingField) {
+  ScratchDir dir;
+  const fs::path file = dir.path() / "frame.vtu";
+  Frame frame = two_hex_frame();
+  frame.point_fields[1].values.pop_back();  // velocity: 35 values for 12 x 3
+  try {
+    write_vtu(frame, file);
+    FAIL() << "expected RunError";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("velocity"), std::string::npos) << what;
+    EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(VtuWriter, OtherMalformedFramesThrow) {
+  ScratchDir dir;
+  const fs::path file = dir.path() / "frame.vtu";
+  const auto expect_rejected = [&](Frame frame, const char* why) {
+    SCOPED_TRACE(why);
+    EXPECT_THROW(write_vtu(frame, file), RunError);
+  };
+  Frame f = two_hex_frame();
+  f.cell_fields[2].values.push_back(0.0);
+  expect_rejected(f, "cell tensor one value too many");
+  f = two_hex_frame();
+  f.cell_int_fields[0].values.pop_back();
+  expect_rejected(f, "cell int field short");
+  f = two_hex_frame();
+  f.point_int_fields[0].values.push_back(1);
+  expect_rejected(f, "point int field long");
+  f = two_hex_frame();
+  f.hex_connectivity[5] = 12;
+  expect_rejected(f, "node index out of range");
+  f = two_hex_frame();
+  f.hex_connectivity.pop_back();
+  expect_rejected(f, "connectivity not a multiple of 8");
+  f = two_hex_frame();
+  f.points.pop_back();
+  expect_rejected(f, "points not a multiple of 3");
+  f = two_hex_frame();
+  f.point_fields[2].component_names.pop_back();
+  expect_rejected(f, "component names count");
+  f = two_hex_frame();
+  f.point_int_fields[0].name = "temperature";
+  expect_rejected(f, "duplicate name within point data");
+  f = two_hex_frame();
+  f.cell_fields[0].components = 0;
+  expect_rejected(f, "zero components");
+  EXPECT_TRUE(dir.entries().empty());
+}
