@@ -135,6 +135,7 @@ struct Scene {
   std::vector<SectionSpec> sections;
   std::vector<PartSpec> parts;
   std::vector<BoxSpec> boxes;
+  bool merge_coincident_nodes = true;  // mesh.merge_nodes: boxes sharing a face share its nodes
   std::vector<NodeSetSpec> node_sets;
   std::vector<BoundaryConditionSpec> boundary_conditions;
   std::vector<InitialVelocitySpec> initial_velocities;

@@ -205,7 +205,7 @@ std::vector<PartSpec> read_parts(const Reader& r, const Scene& scene) {
 
 std::vector<BoxSpec> read_mesh(const Reader& r, const Scene& scene) {
   r.require_map("a mapping with 'boxes'");
-  r.allow_keys({"boxes"});
+  r.allow_keys({"boxes", "merge_nodes"});
   const Reader boxes = r.at("boxes", "a list of boxes {part, origin, size, elements}");
   boxes.require_list("a list of boxes {part, origin, size, elements}", true);
   const auto parts = names_of(scene.parts);
@@ -227,6 +227,11 @@ std::vector<BoxSpec> read_mesh(const Reader& r, const Scene& scene) {
     out.push_back(std::move(spec));
   }
   return out;
+}
+
+bool read_merge_nodes(const Reader& mesh) {
+  const auto m = mesh.find("merge_nodes");
+  return !m || m->as_choice({"true", "false"}) == "true";
 }
 
 // ---------------------------------------------------------------- node sets
@@ -387,6 +392,7 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
   scene.sections = read_sections(root.at("sections", "a mapping of section name -> {ELFORM, IHQ, QM, Q1, Q2}"));
   scene.parts = read_parts(root.at("parts", "a mapping of part name -> {material, section}"), scene);
   scene.boxes = read_mesh(root.at("mesh", "a mapping with 'boxes'"), scene);
+  scene.merge_coincident_nodes = read_merge_nodes(root.at("mesh", "a mapping with 'boxes'"));
   if (const auto n = root.find("node_sets")) scene.node_sets = read_node_sets(*n, scene);
   if (const auto b = root.find("boundary_conditions")) scene.boundary_conditions = read_bcs(*b, scene);
   if (const auto iv = root.find("initial_velocity")) scene.initial_velocities = read_initial_velocities(*iv, scene);

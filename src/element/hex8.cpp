@@ -29,20 +29,33 @@ double inverse3(const double a[9], double inv[9]) noexcept {
   return det;
 }
 
-double hex8_centroid_gradient(const NodeVec& x, NodeVec& b) noexcept {
-  // J0[a][c] = dx_a/dxi_c at the centre = sum_k x_a,k * xi_c,k / 8
-  double J[9];
+void hex8_centroid_jacobian(const NodeVec& u, double J[9]) noexcept {
   for (int a = 0; a < 3; ++a) {
     double s0 = 0, s1 = 0, s2 = 0;
     for (int k = 0; k < 8; ++k) {
-      s0 += x[a][k] * kXi[k];
-      s1 += x[a][k] * kEta[k];
-      s2 += x[a][k] * kZeta[k];
+      s0 += u[a][k] * kXi[k];
+      s1 += u[a][k] * kEta[k];
+      s2 += u[a][k] * kZeta[k];
     }
     J[3 * a + 0] = 0.125 * s0;
     J[3 * a + 1] = 0.125 * s1;
     J[3 * a + 2] = 0.125 * s2;
   }
+}
+
+bool mid_step_velocity_gradient(const double Jx[9], const double Jv[9], double dt, double L[9]) noexcept {
+  double Jm[9], Jinv[9];
+  for (int i = 0; i < 9; ++i) Jm[i] = Jx[i] - 0.5 * dt * Jv[i];
+  if (inverse3(Jm, Jinv) == 0.0) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) L[3 * i + j] = Jv[3 * i] * Jinv[j] + Jv[3 * i + 1] * Jinv[3 + j] + Jv[3 * i + 2] * Jinv[6 + j];
+  return true;
+}
+
+double hex8_centroid_gradient(const NodeVec& x, NodeVec& b) noexcept {
+  // J0[a][c] = dx_a/dxi_c at the centre = sum_k x_a,k * xi_c,k / 8
+  double J[9];
+  hex8_centroid_jacobian(x, J);
   double Jinv[9];
   const double detj = inverse3(J, Jinv);
   if (!(detj > 0.0)) return detj;
@@ -186,24 +199,53 @@ void hex8_corner_jacobians(const NodeVec& x, double detj[8]) noexcept {
   }
 }
 
-bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8]) noexcept {
-  const double g = 1.0 / std::sqrt(3.0);
+namespace {
+
+// Shape-function derivatives dN_k/dxi_c at the 2x2x2 Gauss points (+-1/sqrt 3, node order).
+struct GaussDerivatives {
+  double dN[8][3][8];
+  GaussDerivatives() {
+    const double g = 1.0 / std::sqrt(3.0);
+    for (int gp = 0; gp < 8; ++gp) {
+      const double xi = g * kXi[gp], eta = g * kEta[gp], zeta = g * kZeta[gp];
+      for (int k = 0; k < 8; ++k) {
+        dN[gp][0][k] = 0.125 * kXi[k] * (1 + kEta[k] * eta) * (1 + kZeta[k] * zeta);
+        dN[gp][1][k] = 0.125 * kEta[k] * (1 + kXi[k] * xi) * (1 + kZeta[k] * zeta);
+        dN[gp][2][k] = 0.125 * kZeta[k] * (1 + kXi[k] * xi) * (1 + kEta[k] * eta);
+      }
+    }
+  }
+};
+
+const GaussDerivatives& gauss_derivatives() {
+  static const GaussDerivatives table;
+  return table;
+}
+
+void gauss_jacobian(const NodeVec& u, const double (&dN)[3][8], double J[9]) {
+  for (int a = 0; a < 3; ++a)
+    for (int c = 0; c < 3; ++c) {
+      double s = 0;
+      for (int k = 0; k < 8; ++k) s += u[a][k] * dN[c][k];
+      J[3 * a + c] = s;
+    }
+}
+
+}  // namespace
+
+void hex8_gauss_jacobian(const NodeVec& v, int gp, double J[9]) noexcept {
+  gauss_jacobian(v, gauss_derivatives().dN[gp], J);
+}
+
+bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8], double (*Jout)[9]) noexcept {
+  const GaussDerivatives& table = gauss_derivatives();
   bool ok = true;
   for (int gp = 0; gp < 8; ++gp) {
-    const double xi = g * kXi[gp], eta = g * kEta[gp], zeta = g * kZeta[gp];
-    double dN[3][8];
-    for (int k = 0; k < 8; ++k) {
-      dN[0][k] = 0.125 * kXi[k] * (1 + kEta[k] * eta) * (1 + kZeta[k] * zeta);
-      dN[1][k] = 0.125 * kEta[k] * (1 + kXi[k] * xi) * (1 + kZeta[k] * zeta);
-      dN[2][k] = 0.125 * kZeta[k] * (1 + kXi[k] * xi) * (1 + kEta[k] * eta);
-    }
+    const auto& dN = table.dN[gp];
     double J[9];
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 3; ++c) {
-        double s = 0;
-        for (int k = 0; k < 8; ++k) s += x[a][k] * dN[c][k];
-        J[3 * a + c] = s;
-      }
+    gauss_jacobian(x, dN, J);
+    if (Jout)
+      for (int i = 0; i < 9; ++i) Jout[gp][i] = J[i];
     double Jinv[9];
     detj[gp] = inverse3(J, Jinv);
     if (!(detj[gp] > 0.0)) {

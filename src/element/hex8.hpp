@@ -28,6 +28,16 @@ using NodeVec = double[3][8];  // component-major nodal values of one element
 // b is then not computed).
 double hex8_centroid_gradient(const NodeVec& x, NodeVec& b) noexcept;
 
+// Jacobian at the element centre of any nodal field u: J[3a+c] = du_a/dxi_c = sum_k u_a,k xi_c,k / 8.
+// With u = x it is dx/dxi; with u = v it is dv/dxi, and L = dv/dx = J_v J_x^-1.
+void hex8_centroid_jacobian(const NodeVec& u, double J[9]) noexcept;
+
+// Mid-step velocity gradient L = J_v (J_x - dt/2 J_v)^-1 from the end-of-step Jacobian J_x and the
+// velocity Jacobian J_v: the geometry x^{n+1/2} = x^{n+1} - dt/2 v^{n+1/2}. For a rigid rotation
+// this L is exactly skew (a Cayley transform), so no spurious strain arises (second-order
+// accurate strain increments, as in DYNA3D/LULESH). Returns false if the mid-step Jacobian is singular.
+bool mid_step_velocity_gradient(const double Jx[9], const double Jv[9], double dt, double L[9]) noexcept;
+
 // Flanagan-Belytschko uniform (mean) gradient b_k = (1/V) dV/dx_k and the exact volume
 // V = (1/3) sum_k x_k . dV/dx_k (exact for any trilinear hexahedron). Returns V.
 double hex8_mean_gradient(const NodeVec& x, NodeVec& b) noexcept;
@@ -45,7 +55,11 @@ void hex8_corner_jacobians(const NodeVec& x, double detj[8]) noexcept;
 
 // 2x2x2 Gauss point data for ELFORM 2: gradients B[g][i][k] and det J[g] (weights are 1).
 // Returns false if any det J <= 0.
-bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8]) noexcept;
+// J (optional, may be nullptr) receives the Jacobians dx/dxi at the points, row-major.
+bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8], double (*J)[9] = nullptr) noexcept;
+
+// Velocity Jacobian dv/dxi at Gauss point gp (same point order as hex8_gauss_gradients).
+void hex8_gauss_jacobian(const NodeVec& v, int gp, double J[9]) noexcept;
 
 // Hourglass shape vectors gamma[a][k] = Gamma[a][k] - sum_i (Gamma_a . x_i) b[i][k] (FB81 eq. 3.x);
 // orthogonal to every linear field for any gradient b with sum_k x_k (x) b_k = I.

@@ -17,8 +17,10 @@ struct Mesh {
   std::size_t num_elements() const { return element_part.size(); }
 };
 
-// Structured blocks from Scene::boxes. Each box has its own nodes (boxes are never merged, so two
-// touching boxes are two bodies); elements are numbered x fastest, then y, then z.
+// Structured blocks from Scene::boxes; elements are numbered box by box, x fastest, then y, then z.
+// With Scene::merge_coincident_nodes (the default) nodes of different boxes that coincide (within
+// 1e-9 of the model size) become one node, so stacked boxes form one body (a laminate of plies);
+// with it off every box is a separate body.
 Mesh mesh_boxes(const config::Scene& scene);
 
 }  // namespace plyimpact::mesh

@@ -187,8 +187,13 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     }
     st.volume[e] = V;
     const double rho = rho0 * blk.volume0[e] / V;
-    double L[9], D[6], W[9];
-    velocity_gradient(ve, b, L);
+    double Jx[9], Jv[9], L[9], D[6], W[9];
+    element::hex8_centroid_jacobian(xe, Jx);
+    element::hex8_centroid_jacobian(ve, Jv);
+    if (!element::mid_step_velocity_gradient(Jx, Jv, dt, L)) {
+      record_bad(r, blk.element_id[e], V, false);
+      continue;
+    }
     split_rate(L, D, W);
     const double trD = D[0] + D[1] + D[2];
 
@@ -303,8 +308,8 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
     gather(x, conn, xe);
     gather(v, conn, ve);
     if constexpr (kTotalLagrangian) gather(X, conn, Xe);
-    double B[8][3][8], detj[8];
-    if (!element::hex8_gauss_gradients(xe, B, detj)) {
+    double B[8][3][8], detj[8], Jx[8][9];
+    if (!element::hex8_gauss_gradients(xe, B, detj, Jx)) {
       double worst = detj[0];
       for (int g = 1; g < 8; ++g) worst = std::min(worst, detj[g]);
       record_bad(r, blk.element_id[e], worst, std::isnan(worst));
@@ -320,17 +325,28 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
       for (int k = 0; k < 8; ++k) bbar[i][k] /= V;
     st.volume[e] = V;
     const double rho = rho0 * blk.volume0[e] / V;
-    double trDbar = 0;
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 8; ++k) trDbar += ve[i][k] * bbar[i][k];
     const double Jbar = V / blk.volume0[e];
+    // Mid-step rates at every point; the mean dilatation rate is their volume average.
+    double Lg[8][9];
+    double trDbar = 0;
+    bool singular = false;
+    for (int g = 0; g < 8; ++g) {
+      double Jv[9];
+      element::hex8_gauss_jacobian(ve, g, Jv);
+      singular = singular || !element::mid_step_velocity_gradient(Jx[g], Jv, dt, Lg[g]);
+      trDbar += detj[g] * (Lg[g][0] + Lg[g][4] + Lg[g][8]);
+    }
+    if (singular) {
+      record_bad(r, blk.element_id[e], V, false);
+      continue;
+    }
+    trDbar /= V;
 
     double fe[3][8] = {};
     double dIE = 0;
     for (int g = 0; g < 8; ++g) {
-      double L[9], D[6], W[9];
-      velocity_gradient(ve, B[g], L);
-      split_rate(L, D, W);
+      double D[6], W[9];
+      split_rate(Lg[g], D, W);
       const double vol_correction = (trDbar - (D[0] + D[1] + D[2])) / 3.0;
       D[0] += vol_correction;
       D[1] += vol_correction;

@@ -9,6 +9,10 @@ namespace plyimpact::solver {
 
 namespace {
 constexpr std::size_t kNodeChunk = 4096;  // fixed (not per thread) so sums do not depend on threads
+// Below this many elements a cycle is too short to pay for the per-colour barriers of a parallel
+// element pass (and an oversubscribed machine makes each barrier cost a time slice): run serially.
+// The arithmetic and the summation order are the same either way.
+constexpr std::size_t kParallelMinElements = 8192;
 }
 
 Solver::Solver(const model::Model& model) : model_(model) {
@@ -75,7 +79,8 @@ void Solver::step() {
   const double* __restrict f = s.f.data();
   const double* __restrict mass = model_.mass.data();
   const double* __restrict inv_mass = inverse_mass_.data();
-#pragma omp parallel for schedule(static)
+  const bool parallel = model_.num_elements() >= kParallelMinElements;
+#pragma omp parallel for schedule(static) if (parallel)
   for (long chunk = 0; chunk < num_chunks; ++chunk) {
     const std::size_t begin = std::size_t(chunk) * kNodeChunk, end = std::min(n, begin + kNodeChunk);
     double ke = 0;
@@ -135,7 +140,8 @@ void Solver::element_pass(double dt) {
   const double* x = s.x.data();
   const double* v = s.v.data();
   double* f = s.f.data();
-#pragma omp parallel
+  const bool parallel = model_.num_elements() >= kParallelMinElements;
+#pragma omp parallel if (parallel)
   {
     for (const auto& color : schedule.colors) {
 #pragma omp for schedule(dynamic, 1)
