@@ -1,0 +1,64 @@
+// Stability diagnosis: an element driven inside out stops the run with its id, part, cycle and
+// time; run_model keeps the frames already written and summary.json says why it stopped.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "solver/run.hpp"
+#include "support.hpp"
+
+namespace plyimpact {
+namespace {
+
+model::Model crushed_cube() {
+  model::Model model = test::model_from_yaml(
+      "units: SI\ncontrol: {termination_time: 1.0e-3}\noutput: {interval: 1.0e-7}\nmaterials:\n"
+      "  m: {card: MAT_001, RO: 7800, E: 200e9, PR: 0.3}\nsections:\n  s: {ELFORM: 1, IHQ: 4}\n"
+      "parts:\n  block: {material: m, section: s}\nmesh:\n  boxes:\n    - {part: block, size: [0.01, 0.01, 0.01], elements: [1, 1, 1]}\n",
+      "crush.yaml");
+  // One corner thrown through the opposite face at 20 km/s: inverts within a few steps.
+  model.v0[3 * 7 + 0] = model.v0[3 * 7 + 1] = model.v0[3 * 7 + 2] = -2e4;
+  return model;
+}
+
+TEST(Stability, InvertedElementIsNamed) {
+  const model::Model model = crushed_cube();
+  solver::Solver s(model);
+  try {
+    for (int i = 0; i < 1000; ++i) s.step();
+    FAIL() << "the run should have stopped";
+  } catch (const RunError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("element 1 (part 'block')"), std::string::npos) << m;
+    EXPECT_NE(m.find("negative volume"), std::string::npos) << m;
+    EXPECT_NE(m.find("cycle"), std::string::npos) << m;
+    EXPECT_NE(m.find("time"), std::string::npos) << m;
+  }
+}
+
+TEST(Stability, StoppedRunKeepsOutputAndExplains) {
+  const model::Model model = crushed_cube();
+  const auto dir = std::filesystem::temp_directory_path() / "plyimpact_test_stability";
+  std::filesystem::remove_all(dir);
+  solver::RunOptions options;
+  options.output_dir = dir;
+  const solver::RunReport r = solver::run_model(model, options);
+  EXPECT_FALSE(r.completed);
+  EXPECT_NE(r.stop_reason.find("element 1"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "crush.pvd"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "crush_0000.vtu"));
+  std::ifstream in(dir / "summary.json");
+  std::stringstream json;
+  json << in.rdbuf();
+  EXPECT_NE(json.str().find("\"status\": \"stopped\""), std::string::npos) << json.str();
+  EXPECT_NE(json.str().find("negative volume"), std::string::npos);
+  for (const auto& entry : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << "temporary file left behind";
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace plyimpact
