@@ -1,0 +1,63 @@
+// bench: nanoseconds per element-cycle of the whole explicit cycle (node update + element pass)
+// for ELFORM 1 + IHQ 4 + *MAT_002 hexahedra, on 1e4, 1e5 and 1e6 elements, with 1 and 2 OpenMP
+// threads. Usage: bench [max_elements]   (default 1e6). Figures go to BENCHMARKS.md.
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "config/scene_loader.hpp"
+#include "mesh/mesh.hpp"
+#include "model/model.hpp"
+#include "solver/solver.hpp"
+
+using namespace plyimpact;
+
+static model::Model make_model(int nx, int ny, int nz) {
+  const std::string yaml =
+      "units: SI\ncontrol: {termination_time: 1}\nmaterials:\n"
+      "  ply: {card: MAT_002, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.019, PRCA: 0.019, PRCB: 0.53,"
+      " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1,0,0], D: [0,1,0]}\n"
+      "sections:\n  s: {ELFORM: 1, IHQ: 4, QM: 0.1}\nparts:\n  p: {material: ply, section: s, beta: 30}\n"
+      "mesh:\n  boxes:\n    - {part: p, size: [" + std::to_string(nx * 1e-3) + ", " + std::to_string(ny * 1e-3) + ", " +
+      std::to_string(nz * 1e-3) + "], elements: [" + std::to_string(nx) + ", " + std::to_string(ny) + ", " +
+      std::to_string(nz) + "]}\n";
+  const config::Scene scene = config::load_scene_from_string(yaml, "bench.yaml");
+  model::Model m = model::build_model(scene, mesh::mesh_boxes(scene));
+  for (std::size_t n = 0; n < m.num_nodes(); ++n) {  // a smooth non-rigid velocity field
+    const double* X = &m.X[3 * n];
+    m.v0[3 * n + 0] = std::sin(300 * X[1]);
+    m.v0[3 * n + 1] = std::cos(200 * X[2]);
+    m.v0[3 * n + 2] = std::sin(250 * X[0]) * 2;
+  }
+  return m;
+}
+
+int main(int argc, char** argv) {
+  const double max_elements = argc > 1 ? std::atof(argv[1]) : 1e6;
+  struct Size { int nx, ny, nz, cycles; };
+  const Size sizes[] = {{25, 20, 20, 300}, {50, 50, 40, 40}, {100, 100, 100, 6}};
+  std::printf("%12s %8s %10s %16s %10s\n", "elements", "threads", "cycles", "ns/element-cycle", "speed-up");
+  for (const Size& s : sizes) {
+    const double ne = double(s.nx) * s.ny * s.nz;
+    if (ne > max_elements) break;
+    const model::Model model = make_model(s.nx, s.ny, s.nz);
+    double ns_one_thread = 0;
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      solver::Solver solver(model);
+      for (int i = 0; i < 2; ++i) solver.step();  // warm up (page faults, caches)
+      const auto t0 = std::chrono::steady_clock::now();
+      for (int i = 0; i < s.cycles; ++i) solver.step();
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const double ns = 1e9 * seconds / (ne * s.cycles);
+      if (threads == 1) ns_one_thread = ns;
+      std::printf("%12.0f %8d %10d %16.1f %10.2f\n", ne, threads, s.cycles, ns, ns_one_thread / ns);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
