@@ -1,6 +1,6 @@
 // bench: nanoseconds per element-cycle of the whole explicit cycle (node update + element pass)
 // for ELFORM 1 + IHQ 4 + *MAT_002 hexahedra, on 1e4, 1e5 and 1e6 elements, with 1 and 2 OpenMP
-// threads. Usage: bench [max_elements]   (default 1e6). Figures go to BENCHMARKS.md.
+// threads. Usage: bench [max_elements [max_threads]]   (defaults 1e6, 2). Figures go to BENCHMARKS.md.
 #include <omp.h>
 
 #include <chrono>
@@ -38,6 +38,7 @@ static model::Model make_model(int nx, int ny, int nz) {
 
 int main(int argc, char** argv) {
   const double max_elements = argc > 1 ? std::atof(argv[1]) : 1e6;
+  const int max_threads = argc > 2 ? std::atoi(argv[2]) : 2;
   struct Size { int nx, ny, nz, cycles; };
   const Size sizes[] = {{25, 20, 20, 300}, {50, 50, 40, 40}, {100, 100, 100, 6}};
   std::printf("%12s %8s %10s %16s %10s\n", "elements", "threads", "cycles", "ns/element-cycle", "speed-up");
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
     if (ne > max_elements) break;
     const model::Model model = make_model(s.nx, s.ny, s.nz);
     double ns_one_thread = 0;
-    for (int threads : {1, 2}) {
+    for (int threads = 1; threads <= max_threads; ++threads) {
       omp_set_num_threads(threads);
       solver::Solver solver(model);
       for (int i = 0; i < 2; ++i) solver.step();  // warm up (page faults, caches)

@@ -50,6 +50,10 @@ struct ElementBlock {
   std::vector<Index> element_id;   // (num_elements) 1-based ids, unique over the model
   std::vector<int> orientation;    // (num_elements) index into Model::orientations (MAT_002 only)
   std::vector<double> volume0;     // (num_elements) exact reference volume, m^3
+  // (num_elements, 9) inverse of the centre Jacobian dX/dxi of the reference element, row-major; only
+  // for total-Lagrangian materials with ELFORM 1, where F = J_x J_X^-1 at the centre (no gather of
+  // reference coordinates and no matrix inverse in the cycle).
+  std::vector<double> reference_jacobian_inverse;
   std::size_t size() const { return element_id.size(); }
   int points() const { return elform == 2 ? 8 : 1; }
   HourglassKind hourglass() const {

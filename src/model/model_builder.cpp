@@ -157,6 +157,12 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
                            << " (volume " << volume << " m^3); allowed: valid hexahedra with positive volume "
                            << "(check node order and degenerate elements)");
       block.volume0[e] = volume;
+      if (mat.kind == MaterialKind::OrthotropicElastic && block.elform == 1) {
+        double J[9], Jinv[9];
+        element::hex8_centroid_jacobian(x, J);
+        element::inverse3(J, Jinv);
+        block.reference_jacobian_inverse.insert(block.reference_jacobian_inverse.end(), Jinv, Jinv + 9);
+      }
       for (int k = 0; k < 8; ++k) model.mass[block.conn[8 * e + k]] += mat.density * volume / 8.0;
       if (mat.kind == MaterialKind::OrthotropicElastic) {
         const double beta = part_spec.beta + (mat.axes.AOPT == 3 ? mat.axes.BETA : 0.0);
