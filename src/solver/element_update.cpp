@@ -174,6 +174,36 @@ inline void record_dt(ChunkResult& r, Index id, double dte) {
 constexpr int kLanes = 8;
 #define PLYIMPACT_LANES _Pragma("omp simd") for (int l = 0; l < kLanes; ++l)
 
+// Total-Lagrangian stress of lane l: F = J_x J_X^-1; E = (F^T F - I)/2 (engineering Voigt);
+// S = C E; sigma = F S F^T / det F. `stiffness(i)` returns entry i of the 6x6 global stiffness.
+template <class Stiffness>
+inline void total_lagrangian_lane(const double (&Jx)[9][kLanes], const double (&Ji)[9][kLanes], int l,
+                                  Stiffness stiffness, double (&s)[6][kLanes]) {
+  double F[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      F[3 * i + j] = Jx[3 * i][l] * Ji[j][l] + Jx[3 * i + 1][l] * Ji[3 + j][l] + Jx[3 * i + 2][l] * Ji[6 + j][l];
+  const double J =
+      F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) + F[2] * (F[3] * F[7] - F[4] * F[6]);
+  auto ftf = [&](int i, int j) { return F[i] * F[j] + F[3 + i] * F[3 + j] + F[6 + i] * F[6 + j]; };
+  const double E[6] = {0.5 * (ftf(0, 0) - 1), 0.5 * (ftf(1, 1) - 1), 0.5 * (ftf(2, 2) - 1),
+                       ftf(0, 1),             ftf(1, 2),             ftf(2, 0)};
+  double Sv[6];
+  for (int a = 0; a < 6; ++a) {
+    double sum = 0;
+    for (int c = 0; c < 6; ++c) sum += stiffness(6 * a + c) * E[c];
+    Sv[a] = sum;
+  }
+  const double S[9] = {Sv[0], Sv[3], Sv[5], Sv[3], Sv[1], Sv[4], Sv[5], Sv[4], Sv[2]};
+  double T[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) T[3 * i + j] = F[3 * i] * S[j] + F[3 * i + 1] * S[3 + j] + F[3 * i + 2] * S[6 + j];
+  const double rJ = 1.0 / J;
+  auto fsf = [&](int i, int j) { return (T[3 * i] * F[3 * j] + T[3 * i + 1] * F[3 * j + 1] + T[3 * i + 2] * F[3 * j + 2]) * rJ; };
+  s[0][l] = fsf(0, 0), s[1][l] = fsf(1, 1), s[2][l] = fsf(2, 2);
+  s[3][l] = fsf(0, 1), s[4][l] = fsf(1, 2), s[5][l] = fsf(2, 0);
+}
+
 template <MaterialKind M, int IHQ>
 void elform1(const model::Model& model, const model::ElementBlock& blk, BlockState& st, Index begin, Index end,
              const double* __restrict x, const double* __restrict v, double* __restrict f, double dt, ChunkResult& r) {
@@ -316,40 +346,24 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       for (int i = 0; i < 6; ++i) s_old[i][l] = st.stress[6 * std::size_t(elem[l]) + i];
     if constexpr (kTotalLagrangian) {
       alignas(64) double Ji[9][kLanes];
-      const double* Cl[kLanes];
       for (int l = 0; l < kLanes; ++l) {
         const double* src = &blk.reference_jacobian_inverse[9 * std::size_t(elem[l])];
         for (int i = 0; i < 9; ++i) Ji[i][l] = src[i];
-        Cl[l] = model.orientations[blk.orientation[elem[l]]].c_global.data();
       }
-      alignas(64) double Cv[36][kLanes];
-      for (int l = 0; l < kLanes; ++l)
-        for (int i = 0; i < 36; ++i) Cv[i][l] = Cl[l][i];
-      PLYIMPACT_LANES {
-        // F = J_x J_X^-1; E = (F^T F - I)/2 (engineering Voigt); S = C E; sigma = F S F^T / det F.
-        double F[9];
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j)
-            F[3 * i + j] = Jx[3 * i][l] * Ji[j][l] + Jx[3 * i + 1][l] * Ji[3 + j][l] + Jx[3 * i + 2][l] * Ji[6 + j][l];
-        const double J = F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
-                         F[2] * (F[3] * F[7] - F[4] * F[6]);
-        auto ftf = [&](int i, int j) { return F[i] * F[j] + F[3 + i] * F[3 + j] + F[6 + i] * F[6 + j]; };
-        const double E[6] = {0.5 * (ftf(0, 0) - 1), 0.5 * (ftf(1, 1) - 1), 0.5 * (ftf(2, 2) - 1),
-                             ftf(0, 1),             ftf(1, 2),             ftf(2, 0)};
-        double Sv[6];
-        for (int a = 0; a < 6; ++a) {
-          double sum = 0;
-          for (int bcol = 0; bcol < 6; ++bcol) sum += Cv[6 * a + bcol][l] * E[bcol];
-          Sv[a] = sum;
+      // A ply has one orientation almost always: then the stiffness is broadcast, not copied per lane.
+      const int o0 = blk.orientation[elem[0]];
+      bool uniform = true;
+      for (int l = 1; l < kLanes; ++l) uniform = uniform && blk.orientation[elem[l]] == o0;
+      if (uniform) {
+        const double* C0 = model.orientations[o0].c_global.data();
+        PLYIMPACT_LANES total_lagrangian_lane(Jx, Ji, l, [&](int i) { return C0[i]; }, s);
+      } else {
+        alignas(64) double Cv[36][kLanes];
+        for (int l = 0; l < kLanes; ++l) {
+          const double* Cl = model.orientations[blk.orientation[elem[l]]].c_global.data();
+          for (int i = 0; i < 36; ++i) Cv[i][l] = Cl[i];
         }
-        const double S[9] = {Sv[0], Sv[3], Sv[5], Sv[3], Sv[1], Sv[4], Sv[5], Sv[4], Sv[2]};
-        double T[9];
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) T[3 * i + j] = F[3 * i] * S[j] + F[3 * i + 1] * S[3 + j] + F[3 * i + 2] * S[6 + j];
-        const double rJ = 1.0 / J;
-        auto fsf = [&](int i, int j) { return (T[3 * i] * F[3 * j] + T[3 * i + 1] * F[3 * j + 1] + T[3 * i + 2] * F[3 * j + 2]) * rJ; };
-        s[0][l] = fsf(0, 0), s[1][l] = fsf(1, 1), s[2][l] = fsf(2, 2);
-        s[3][l] = fsf(0, 1), s[4][l] = fsf(1, 2), s[5][l] = fsf(2, 0);
+        PLYIMPACT_LANES total_lagrangian_lane(Jx, Ji, l, [&](int i) { return Cv[i][l]; }, s);
       }
     } else {
       PLYIMPACT_LANES {
