@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <sstream>
 
@@ -37,6 +38,38 @@ TEST(Stability, InvertedElementIsNamed) {
     EXPECT_NE(m.find("cycle"), std::string::npos) << m;
     EXPECT_NE(m.find("time"), std::string::npos) << m;
   }
+}
+
+TEST(Stability, CollapsingTimeStepNamesControllingElement) {
+  // Compression lowers the element step through the bulk-viscosity term; with a collapse limit of
+  // 0.999 of the initial step the run must stop and name the element that controls the step.
+  model::Model model = test::model_from_yaml(
+      "units: SI\ncontrol: {termination_time: 1.0e-3, dt_min_ratio: 0.999}\nmaterials:\n"
+      "  m: {card: MAT_001, RO: 7800, E: 200e9, PR: 0.3}\nsections:\n  s: {ELFORM: 1, IHQ: 4}\n"
+      "parts:\n  block: {material: m, section: s}\nmesh:\n  boxes:\n    - {part: block, size: [0.01, 0.01, 0.01], elements: [2, 2, 2]}\n");
+  for (std::size_t n = 0; n < model.num_nodes(); ++n) model.v0[3 * n + 2] = -50.0 * model.X[3 * n + 2] / 0.01;
+  solver::Solver s(model);
+  try {
+    for (int i = 0; i < 1000; ++i) s.step();
+    FAIL() << "the run should have stopped";
+  } catch (const RunError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("time step collapsed"), std::string::npos) << m;
+    EXPECT_NE(m.find("controlling element"), std::string::npos) << m;
+    EXPECT_NE(m.find("part 'block'"), std::string::npos) << m;
+  }
+}
+
+TEST(Stability, NonFiniteVelocityIsCaught) {
+  model::Model model = crushed_cube();
+  std::fill(model.v0.begin(), model.v0.end(), 0.0);
+  solver::Solver s(model);
+  s.state().v[5] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(
+      {
+        for (int i = 0; i < 3; ++i) s.step();
+      },
+      RunError);
 }
 
 TEST(Stability, StoppedRunKeepsOutputAndExplains) {
