@@ -7,9 +7,10 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/mesh_export.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
-#include "mesh/mesh.hpp"
+#include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
 #include "model/subsystems.hpp"
 #include "solver/run.hpp"
@@ -28,6 +29,9 @@ constexpr const char* kUsage =
     "                            summary.json\n"
     "  check SCENE.yaml          validate the scene and print the model summary, active subsystems,\n"
     "                            stable time step and cost estimate; writes nothing\n"
+    "  mesh SCENE.yaml [-o DIR]  mesh the scene and write it for inspection (default results/<scene>):\n"
+    "                            <scene>_mesh.vtu (parts, plies, ply angles, material axes,\n"
+    "                            interfaces) and <scene>.msh (gmsh)\n"
     "  --help                    this text\n"
     "  --version                 program version\n"
     "\n"
@@ -35,14 +39,45 @@ constexpr const char* kUsage =
 
 struct Loaded {
   config::Scene scene;
+  mesh::Mesh mesh;
   model::Model model;
 };
 
+// Boxes, or the gmsh laminate mesher and the impactor when the scene has a laminate.
 Loaded load(const std::string& path) {
   Loaded l;
   l.scene = config::load_scene(path);
-  l.model = model::build_model(l.scene, mesh::mesh_boxes(l.scene));
+  l.mesh = mesh::mesh_scene(l.scene);
+  l.model = model::build_model(l.scene, l.mesh);
   return l;
+}
+
+// Data the mesher provides that the solver does not use yet (interfaces: issue 5, contact: issue 4).
+void print_mesher_extras(const model::Model& m, std::ostream& out) {
+  for (const auto& i : m.interfaces)
+    out << "  interface " << i.id << " (plies " << i.lower_ply + 1 << "/" << i.upper_ply + 1 << ", z = " << i.z
+        << " m): " << i.lower_nodes.size() << " coincident node pairs, " << i.lower_segments.size() / 4
+        << " segment pairs; tagged for delamination, not tied or released by the solver yet\n";
+  if (m.impactor) {
+    const auto& imp = *m.impactor;
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "  impactor: %s, %zu surface quads, mass %.6g kg, centre of mass (%.6g, %.6g, %.6g) m, "
+                  "velocity (%.6g, %.6g, %.6g) m/s; not used by the solver until contact lands\n",
+                  imp.rigid ? "rigid" : "deformable", imp.surface_quads.size() / 4, imp.mass, imp.centre_of_mass[0],
+                  imp.centre_of_mass[1], imp.centre_of_mass[2], imp.velocity[0], imp.velocity[1], imp.velocity[2]);
+    out << buf;
+  }
+}
+
+int mesh_command(const std::string& path, const std::string& out_dir, std::ostream& out) {
+  const Loaded l = load(path);
+  const auto dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
+  out << "plyimpact mesh: " << path << ": " << l.model.num_nodes() << " nodes, " << l.model.num_elements()
+      << " elements, " << l.model.parts.size() << " parts\n";
+  print_mesher_extras(l.model, out);
+  for (const auto& p : export_mesh(l.scene, l.mesh, l.model, dir)) out << "wrote " << p.string() << "\n";
+  return 0;
 }
 
 std::size_t memory_estimate(const model::Model& m) {
@@ -77,6 +112,7 @@ int check(const std::string& path, std::ostream& out) {
                   mat.card.c_str(), mat.density, mat.wave_speed);
     out << buf;
   }
+  print_mesher_extras(m, out);
   out << "  subsystems:\n";
   for (const auto& s : model::subsystems(m)) out << "    [" << (s.active ? "on " : "off") << "] " << s.name << ": " << s.detail << "\n";
   const auto& st = solver.state();
@@ -127,16 +163,17 @@ int run_application(const std::vector<std::string>& args, std::ostream& out, std
       out << "plyimpact " << PLYIMPACT_VERSION << "\n";
       return 0;
     }
-    if ((args[0] == "run" || args[0] == "check") && args.size() >= 2) {
+    if ((args[0] == "run" || args[0] == "check" || args[0] == "mesh") && args.size() >= 2) {
       std::string out_dir;
       for (std::size_t i = 2; i < args.size(); ++i) {
-        if ((args[i] == "-o" || args[i] == "--output") && i + 1 < args.size() && args[0] == "run") {
+        if ((args[i] == "-o" || args[i] == "--output") && i + 1 < args.size() && (args[0] == "run" || args[0] == "mesh")) {
           out_dir = args[++i];
         } else {
           err << "plyimpact: unexpected argument '" << args[i] << "'\n" << kUsage;
           return 64;
         }
       }
+      if (args[0] == "mesh") return mesh_command(args[1], out_dir, out);
       return args[0] == "run" ? run(args[1], out_dir, out) : check(args[1], out);
     }
     err << "plyimpact: unknown command or missing scene file\n" << kUsage;

@@ -4,6 +4,7 @@
 // carry a keyword card across. Nothing here depends on yaml-cpp.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <variant>
@@ -79,7 +80,9 @@ struct BoxSpec {
 
 // Node selection. Exactly one of the selectors is used.
 struct NodeSetSpec {
-  enum class Kind { Box, Plane, Part, All };
+  // Generated: the nodes are listed by the mesh generator (mesh::Mesh::node_sets, same name), e.g.
+  // a laminate's supports and symmetry planes, which select exact grid lines rather than regions.
+  enum class Kind { Box, Plane, Part, All, Generated };
   std::string name;
   Kind kind = Kind::All;
   Vec3 box_min{0, 0, 0}, box_max{0, 0, 0};  // Box: closed, with tolerance
@@ -125,6 +128,65 @@ struct OutputSpec {
   double history_interval = 0;  // s between history.csv rows; 0 = 1000 rows over the run
 };
 
+// One ply of a laminate, bottom (z = 0) to top.
+struct PlySpec {
+  double angle = 0;       // rad, about the laminate normal (+z), from the material's a axis (AOPT 2)
+  double thickness = 0;   // m
+  std::string material;   // MaterialSpec::name
+  int part = -1;          // index into Scene::parts (one part per ply or per sub-laminate block)
+};
+
+// A support of the plate; the loader turns it into a Generated node set plus a fixed condition.
+struct SupportSpec {
+  enum class Kind { Clamped, Window };
+  std::string name;                    // node set name
+  Kind kind = Kind::Clamped;
+  std::array<bool, 4> edges{};         // Clamped: x0, x1, y0, y1 (the full side faces of the plate)
+  double window_x = 0, window_y = 0;   // Window: opening centred on the impact point, bottom face
+  std::array<bool, 3> fix{};           // dofs fixed on the set
+  SourceLocation where;
+};
+
+// Laminated plate meshed ply by ply with gmsh (mesh/laminate_mesher): x along the length, y along
+// the width, z through the thickness. A symmetry plane keeps the half x <= length/2 (or y <= width/2).
+struct LaminateSpec {
+  double length = 0, width = 0;
+  std::vector<PlySpec> plies;
+  std::string section;               // SectionSpec::name for every ply part
+  int elements_per_ply = 1;          // through each ply's thickness
+  double element_size = 0;           // in-plane, m
+  double impact_x = 0, impact_y = 0; // impact point (default: plate centre)
+  // Refined zone: zone_x by zone_y centred on the impact point, meshed uniformly at
+  // zone_element_size, graded (geometric progression) out to element_size. 0 = no zone.
+  double zone_x = 0, zone_y = 0, zone_element_size = 0;
+  int refinement_level = 0;          // every in-plane division halved this many times (nested meshes)
+  // delaminating[i]: the interface between plies i and i+1 (0-based) gets duplicated nodes.
+  std::vector<bool> delaminating;
+  bool group_plies = false;          // adjacent equal-angle plies without a delaminating interface share a part
+  std::array<bool, 2> symmetry{};    // symmetry planes x = length/2, y = width/2 (half/quarter model)
+  std::vector<SupportSpec> supports;
+  SourceLocation where;
+};
+
+// Impactor, built by mesh/impactor_mesher from the gmsh scripts in geo/. Its axis is z; the nose
+// points down at the impact point, `gap` above the top of the plate.
+struct ImpactorSpec {
+  enum class Shape { HemisphericalCylinder, Sphere, FlatCylinder, Cube };
+  Shape shape = Shape::HemisphericalCylinder;
+  double diameter = 0;       // m (Cube: edge length)
+  double length = 0;         // m, overall length along the axis (cylinders; 0 = diameter)
+  double mass = 0;           // kg; 0 = from the material's density
+  double density = 0;        // kg/m^3 used for the impactor (stated, or mass / nominal volume)
+  bool rigid = true;         // rigid: surface + mass properties only; else a hex part
+  std::string material;      // MaterialSpec::name (deformable; for rigid optional, gives the density)
+  int part = -1;             // index into Scene::parts (deformable only)
+  double gap = 0;            // m between the nose and the top of the plate
+  double x = 0, y = 0;       // axis position (default: the laminate's impact point)
+  Vec3 velocity{0, 0, 0};    // m/s
+  double element_size = 0;   // m; 0 = diameter / 8
+  SourceLocation where;
+};
+
 struct Scene {
   std::string name;       // scene file stem, used for the .pvd name
   std::string file;       // path of the YAML file
@@ -139,6 +201,8 @@ struct Scene {
   std::vector<NodeSetSpec> node_sets;
   std::vector<BoundaryConditionSpec> boundary_conditions;
   std::vector<InitialVelocitySpec> initial_velocities;
+  std::optional<LaminateSpec> laminate;  // `laminate:` section: meshed by mesh/laminate_mesher
+  std::optional<ImpactorSpec> impactor;  // `impactor:` section
 };
 
 }  // namespace plyimpact::config

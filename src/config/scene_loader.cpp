@@ -9,6 +9,7 @@
 #include <map>
 #include <sstream>
 
+#include "config/laminate_reader.hpp"
 #include "config/yaml_reader.hpp"
 #include "core/error.hpp"
 
@@ -375,8 +376,8 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
                     "node_sets, boundary_conditions, initial_velocity";
   if (!root.node().IsDefined() || root.node().IsNull()) root.fail("the scene is empty", top);
   root.require_map(top);
-  root.allow_keys({"units", "control", "output", "materials", "sections", "parts", "mesh", "node_sets",
-                   "boundary_conditions", "initial_velocity"});
+  root.allow_keys({"units", "control", "output", "materials", "sections", "parts", "mesh", "laminate", "impactor",
+                   "node_sets", "boundary_conditions", "initial_velocity"});
   Scene scene;
   const Reader units_node = root.at("units", u::allowed_unit_systems());
   units_node.require_scalar(u::allowed_unit_systems());
@@ -390,12 +391,35 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
   if (const auto o = root.find("output")) scene.output = read_output(*o);
   scene.materials = read_materials(root.at("materials", "a mapping of material name -> card"));
   scene.sections = read_sections(root.at("sections", "a mapping of section name -> {ELFORM, IHQ, QM, Q1, Q2}"));
-  scene.parts = read_parts(root.at("parts", "a mapping of part name -> {material, section}"), scene);
-  scene.boxes = read_mesh(root.at("mesh", "a mapping with 'boxes'"), scene);
-  scene.merge_coincident_nodes = read_merge_nodes(root.at("mesh", "a mapping with 'boxes'"));
-  if (const auto n = root.find("node_sets")) scene.node_sets = read_node_sets(*n, scene);
-  if (const auto b = root.find("boundary_conditions")) scene.boundary_conditions = read_bcs(*b, scene);
-  if (const auto iv = root.find("initial_velocity")) scene.initial_velocities = read_initial_velocities(*iv, scene);
+  // A laminate (and impactor) generate their own parts and mesh; `parts` and `mesh` are then optional.
+  const auto laminate = root.find("laminate");
+  const auto impactor = root.find("impactor");
+  if (root.has("parts") || (!laminate && !impactor))
+    scene.parts = read_parts(root.at("parts", "a mapping of part name -> {material, section}"), scene);
+  if (const auto mesh = root.find("mesh")) {
+    if (laminate) mesh->fail("mesh.boxes and laminate cannot be combined", "either mesh (boxes) or laminate");
+    scene.boxes = read_mesh(*mesh, scene);
+    scene.merge_coincident_nodes = read_merge_nodes(*mesh);
+  } else if (!laminate) {
+    root.at("mesh", "a mapping with 'boxes' (or a laminate section)");
+  }
+  if (laminate) detail::read_laminate(*laminate, scene);
+  if (impactor) detail::read_impactor(*impactor, scene);
+  const std::size_t generated_sets = scene.node_sets.size();
+  if (const auto n = root.find("node_sets")) {
+    for (auto& set : read_node_sets(*n, scene)) {
+      for (std::size_t i = 0; i < generated_sets; ++i)
+        if (scene.node_sets[i].name == set.name)
+          throw InputError(msg() << set.where.file << ":" << set.where.line << ":" << set.where.column << ": "
+                                 << set.where.key_path << ": node set name already used by the laminate (support or "
+                                 << "symmetry plane); found '" << set.name << "'; allowed another name");
+      scene.node_sets.push_back(std::move(set));
+    }
+  }
+  if (const auto b = root.find("boundary_conditions"))
+    for (auto& bc : read_bcs(*b, scene)) scene.boundary_conditions.push_back(std::move(bc));
+  if (const auto iv = root.find("initial_velocity"))
+    for (auto& v : read_initial_velocities(*iv, scene)) scene.initial_velocities.push_back(std::move(v));
   return scene;
 }
 

@@ -5,6 +5,7 @@
 // solver::State, so a model can be partitioned, and a state written and read back, later.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -118,6 +119,11 @@ struct Model {
   std::vector<ConstrainedDof> constraints;
   std::vector<int> constrained_sets;  // node sets that carry a boundary condition (reaction output)
   Schedule schedule;
+  // From the laminate mesher (issue 3); carried for the interface and contact subsystems, which do
+  // not use them yet.
+  std::vector<int> element_ply;                // (element_id - 1) -> 0-based ply, -1 if none; may be empty
+  std::vector<mesh::Interface> interfaces;     // delaminating interfaces (coincident node pairs, segments)
+  std::optional<mesh::ImpactorMesh> impactor;  // impactor surface and mass properties
 
   std::size_t num_nodes() const { return mass.size(); }
   std::size_t num_elements() const;

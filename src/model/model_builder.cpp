@@ -197,7 +197,17 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
                                 (hi[2] - lo[2]) * (hi[2] - lo[2]));
   for (const auto& spec : scene.node_sets) {
     const double tol = spec.tolerance > 0 ? spec.tolerance : 1e-6 * size;
-    NodeSet set{spec.name, select_nodes(spec, model, tol)};
+    NodeSet set{spec.name, {}};
+    if (spec.kind == config::NodeSetSpec::Kind::Generated) {
+      const auto it = std::find_if(mesh.node_sets.begin(), mesh.node_sets.end(),
+                                   [&](const mesh::NodeList& l) { return l.name == spec.name; });
+      if (it == mesh.node_sets.end())
+        throw InputError(at(spec.where) << "node set '" << spec.name << "' should come from the mesh generator, "
+                                        << "which did not make it");
+      set.nodes = it->nodes;
+    } else {
+      set.nodes = select_nodes(spec, model, tol);
+    }
     if (set.nodes.empty())
       throw InputError(at(spec.where) << "node set '" << spec.name << "' selects no node; the model spans x ["
                                       << lo[0] << ", " << hi[0] << "] y [" << lo[1] << ", " << hi[1] << "] z ["
@@ -251,6 +261,9 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
       for (int d = 0; d < 3; ++d) model.v0[3 * std::size_t(node) + d] = iv.velocity[d];
   }
 
+  model.element_ply = mesh.element_ply;
+  model.interfaces = mesh.interfaces;
+  model.impactor = mesh.impactor;
   model.schedule = make_schedule(model.blocks, num_nodes);
   return model;
 }
