@@ -123,6 +123,7 @@ struct Model {
   // not use them yet.
   std::vector<int> element_ply;                // (element_id - 1) -> 0-based ply, -1 if none; may be empty
   std::vector<mesh::Interface> interfaces;     // delaminating interfaces (coincident node pairs, segments)
+  bool interfaces_bonded = false;  // true: the pairs are merged in the element connectivity (no tiebreak yet)
   std::optional<mesh::ImpactorMesh> impactor;  // impactor surface and mass properties
 
   std::size_t num_nodes() const { return mass.size(); }

@@ -133,6 +133,19 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
     block.conn.insert(block.conn.end(), &mesh.hex[8 * e], &mesh.hex[8 * e] + 8);
     block.element_id.push_back(Index(e + 1));
   }
+  // Tagged interfaces have duplicated (coincident) nodes. Until the tiebreak subsystem can hold
+  // them together, bond them: the upper ply's elements use the lower partner nodes, so the laminate
+  // is one body (perfectly bonded plies) instead of a stack of loose sheets. The duplicates remain
+  // as unused, massless nodes; Model::interfaces keeps the pairs for the tiebreak subsystem.
+  if (!mesh.interfaces.empty()) {
+    std::vector<Index> partner(mesh.num_nodes());
+    for (std::size_t i = 0; i < partner.size(); ++i) partner[i] = Index(i);
+    for (const auto& itf : mesh.interfaces)
+      for (std::size_t k = 0; k < itf.upper_nodes.size(); ++k) partner[itf.upper_nodes[k]] = itf.lower_nodes[k];
+    for (auto& block : model.blocks)
+      for (Index& node : block.conn) node = partner[node];
+    model.interfaces_bonded = true;
+  }
 
   // Geometry checks, reference volumes, lumped masses and material orientations.
   model.mass.assign(num_nodes, 0.0);

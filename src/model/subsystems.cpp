@@ -33,8 +33,20 @@ std::vector<Subsystem> subsystems(const Model& model) {
   for (const auto& c : model.constraints) (c.curve < 0 ? fixed : prescribed)++;
   list.push_back({"boundary_conditions", !model.constraints.empty(),
                   std::to_string(fixed) + " fixed dof, " + std::to_string(prescribed) + " prescribed-velocity dof"});
-  list.push_back({"contact", false, "left out: the scene defines no contact, so no contact surface or search is built"});
-  list.push_back({"delamination", false, "left out: no tiebreak interface, so no interface node is duplicated"});
+  list.push_back({"contact", false,
+                  model.impactor ? "left out: an impactor is meshed, but penalty contact is not implemented yet "
+                                   "(issue 4), so the impactor does not act on the plate"
+                                 : "left out: the scene defines no contact, so no contact surface or search is built"});
+  if (model.interfaces.empty()) {
+    list.push_back({"delamination", false, "left out: no delaminating interface, so no interface node is duplicated"});
+  } else {
+    std::size_t pairs = 0;
+    for (const auto& i : model.interfaces) pairs += i.lower_nodes.size();
+    list.push_back({"delamination", false,
+                    std::to_string(model.interfaces.size()) + " interface(s) tagged with " + std::to_string(pairs) +
+                        " duplicated node pairs; tiebreak is not implemented yet, so these interfaces are bonded "
+                        "(the plies share the pair's lower node) and cannot delaminate"});
+  }
   list.push_back({"erosion", false, "left out: no material with a failure criterion"});
   return list;
 }

@@ -393,9 +393,14 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       for (int i = 3; i < 6; ++i) p += (s_old[i][l] + s[i][l]) * D[i][l];
       dIE[l] = V[l] * p * dt;
     }
-    // Bulk viscosity (compression only): the cube root is taken only where needed.
-    for (int l = 0; l < kLanes; ++l) q[l] = ok[l] ? bulk_viscosity(rho[l], V[l], c, trD[l], q1, q2) : 0.0;
-    PLYIMPACT_LANES dQ[l] = -q[l] * trD[l] * V[l] * dt;
+    // Bulk viscosity (compression only): the cube root is taken only where needed. Its work uses
+    // the trapezoid rule, (q_old + q_new)/2, as the force acts over both half steps around it.
+    alignas(64) double q_old[kLanes];
+    for (int l = 0; l < kLanes; ++l) {
+      q[l] = ok[l] ? bulk_viscosity(rho[l], V[l], c, trD[l], q1, q2) : 0.0;
+      q_old[l] = st.bulk_q[elem[l]];
+    }
+    PLYIMPACT_LANES dQ[l] = -0.5 * (q_old[l] + q[l]) * trD[l] * V[l] * dt;
 
     // Internal force -V (sigma - q I) b_k.
     alignas(64) double fe[3][8][kLanes];
@@ -429,13 +434,13 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
         }
       }
     }
+    alignas(64) double Qs[12][kLanes];  // stored hourglass forces of the previous cycle
+    for (int l = 0; l < kLanes; ++l)
+      for (int i = 0; i < 12; ++i) Qs[i][l] = st.hourglass[12 * std::size_t(elem[l]) + i];
     if constexpr (kStiffness) {
       // Generalised hourglass forces accumulated from hourglass strain increments and rotated with
       // the element; stiffness scaled with the element's maximum frequency as in FB81:
       // k = QM rho c^2 V sum(b_ik^2) / 4 (keeps omega_hg dt < 2 for QM up to about 0.2 at TSSFAC 0.9).
-      alignas(64) double Qs[12][kLanes];
-      for (int l = 0; l < kLanes; ++l)
-        for (int i = 0; i < 12; ++i) Qs[i][l] = st.hourglass[12 * std::size_t(elem[l]) + i];
       PLYIMPACT_LANES {
         double bb = 0;
         for (int i = 0; i < 3; ++i)
@@ -457,11 +462,13 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       alignas(64) double ah[kLanes];
       for (int l = 0; l < kLanes; ++l) ah[l] = ok[l] ? 0.25 * qm * rho[l] * std::cbrt(V[l] * V[l]) * c : 0.0;
       PLYIMPACT_LANES {
+        // Work of the viscous forces with the trapezoid rule (previous and new force), like the
+        // stress work: the force of a cycle acts over both half steps around it.
         double e = 0;
         for (int i = 0; i < 3; ++i)
           for (int a = 0; a < 4; ++a) {
             Qh[i][a][l] = ah[l] * g[i][a][l];
-            e += Qh[i][a][l] * g[i][a][l] * dt;
+            e += 0.5 * (Qs[4 * i + a][l] + Qh[i][a][l]) * g[i][a][l] * dt;
           }
         dHG[l] = e;
       }
@@ -499,9 +506,9 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       }
       st.volume[e] = V[l];
       for (int i = 0; i < 6; ++i) st.stress[6 * std::size_t(e) + i] = s[i][l];
-      if constexpr (kStiffness)
-        for (int i = 0; i < 3; ++i)
-          for (int a = 0; a < 4; ++a) st.hourglass[12 * std::size_t(e) + 4 * i + a] = Qh[i][a][l];
+      for (int i = 0; i < 3; ++i)
+        for (int a = 0; a < 4; ++a) st.hourglass[12 * std::size_t(e) + 4 * i + a] = Qh[i][a][l];
+      st.bulk_q[e] = q[l];
       st.internal_energy[e] += dIE[l];
       st.hourglass_energy[e] += dHG[l];
       r.internal_energy += dIE[l];
@@ -610,7 +617,8 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
     st.internal_energy[e] += dIE;
     r.internal_energy += dIE;
     const double q = bulk_viscosity(rho, V, c, trDbar, q1, q2);
-    r.bulk_viscous_energy += -q * trDbar * V * dt;
+    r.bulk_viscous_energy += -0.5 * (st.bulk_q[e] + q) * trDbar * V * dt;  // trapezoid, as in ELFORM 1
+    st.bulk_q[e] = q;
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 8; ++k) fe[i][k] += q * V * bbar[i][k];
     scatter(f, conn, fe);

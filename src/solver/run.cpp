@@ -94,7 +94,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
     j["wall_seconds"] = seconds_since(t_start);
     j["nodes"] = std::uint64_t(model.num_nodes());
     j["elements"] = std::uint64_t(model.num_elements());
-    j["threads"] = omp_get_max_threads();
+    j["threads"] = solver ? solver->threads_used() : omp_get_max_threads();
     j["ns_per_element_cycle"] = report.ns_per_element_cycle;
     output::Json subs = output::Json::object();
     for (const auto& s : model::subsystems(model)) {

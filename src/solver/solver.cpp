@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <omp.h>
 
 #include "core/error.hpp"
 
@@ -27,7 +28,8 @@ Solver::Solver(const model::Model& model) : model_(model) {
     const auto& blk = model.blocks[b];
     auto& st = state_.blocks[b];
     st.stress.assign(6 * blk.size() * blk.points(), 0.0);
-    if (blk.hourglass() == model::HourglassKind::Stiffness) st.hourglass.assign(12 * blk.size(), 0.0);
+    if (blk.hourglass() != model::HourglassKind::None) st.hourglass.assign(12 * blk.size(), 0.0);
+    st.bulk_q.assign(blk.size(), 0.0);
     st.internal_energy.assign(blk.size(), 0.0);
     st.hourglass_energy.assign(blk.size(), 0.0);
     st.volume = blk.volume0;
@@ -208,6 +210,10 @@ std::vector<double> Solver::acceleration() const {
   for (std::size_t i = 0; i < a.size(); ++i) a[i] = state_.f[i] * inverse_mass_[i / 3];
   for (const auto& con : model_.constraints) a[con.dof] = 0.0;  // constrained dofs follow their curve
   return a;
+}
+
+int Solver::threads_used() const {
+  return model_.num_elements() >= kParallelMinElements ? omp_get_max_threads() : 1;
 }
 
 std::string Solver::part_of_element(Index id) const {

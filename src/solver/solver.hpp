@@ -36,6 +36,9 @@ class Solver {
   // Acceleration f/m (0 at massless nodes), for output.
   std::vector<double> acceleration() const;
 
+  // OpenMP threads the cycle actually uses (1 below the size where a parallel pass pays off).
+  int threads_used() const;
+
   // Name of the part that owns element `id` (1-based), for messages.
   std::string part_of_element(Index id) const;
 

@@ -13,7 +13,10 @@ namespace plyimpact::solver {
 
 struct BlockState {
   std::vector<double> stress;            // (num_elements * points, 6) Cauchy, global axes, xx yy zz xy yz zx
-  std::vector<double> hourglass;         // (num_elements, 12) stiffness hourglass forces Q[i*4+alpha] (IHQ 4, 5)
+  // (num_elements, 12) hourglass forces Q[i*4+alpha]: accumulated (IHQ 4, 5) or last viscous (IHQ 1-3);
+  // the viscous ones are kept so their work is booked with the trapezoid rule.
+  std::vector<double> hourglass;
+  std::vector<double> bulk_q;            // (num_elements) last bulk-viscosity pressure q, Pa (trapezoid work)
   std::vector<double> internal_energy;   // (num_elements) J, stress work incl. nothing of q
   std::vector<double> hourglass_energy;  // (num_elements) J
   std::vector<double> volume;            // (num_elements) current volume, m^3 (updated every cycle)
