@@ -22,6 +22,7 @@
 
 #include "core/error.hpp"
 #include "output/vtu_writer.hpp"
+#include "scratch_dir.hpp"
 
 namespace fs = std::filesystem;
 using plyimpact::RunError;
@@ -31,40 +32,10 @@ using plyimpact::output::IntField;
 using plyimpact::output::write_vtu;
 using plyimpact::output::WriteOptions;
 
+using plyimpact::test::ScratchDir;
+using plyimpact::test::slurp;
+
 namespace {
-
-class ScratchDir {
- public:
-  ScratchDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
-    std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests: "Suite/Test/param"
-    path_ = fs::temp_directory_path() /
-            ("plyimpact_output_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& e : fs::directory_iterator(path_)) names.push_back(e.path().filename());
-    return names;
-  }
-
- private:
-  fs::path path_;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Values with full 53-bit mantissas, so a lossy (ASCII or float) path would show.
 std::vector<double> awkward_values(std::size_t n, double scale) {
