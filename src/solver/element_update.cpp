@@ -648,10 +648,14 @@ void dispatch_material(const model::Model& model, const model::ElementBlock& blk
 
 void update_elements(const model::Model& model, const model::ElementBlock& block, BlockState& state, Index begin,
                      Index end, const double* x, const double* v, double* f, double dt, ChunkResult& result) {
+  // Accumulate in a local copy and write once: results of neighbouring chunks share cache lines and
+  // are written by different threads.
+  ChunkResult local;
   if (model.materials[block.material].kind == MaterialKind::OrthotropicElastic)
-    dispatch_material<MaterialKind::OrthotropicElastic>(model, block, state, begin, end, x, v, f, dt, result);
+    dispatch_material<MaterialKind::OrthotropicElastic>(model, block, state, begin, end, x, v, f, dt, local);
   else
-    dispatch_material<MaterialKind::IsotropicElastic>(model, block, state, begin, end, x, v, f, dt, result);
+    dispatch_material<MaterialKind::IsotropicElastic>(model, block, state, begin, end, x, v, f, dt, local);
+  result = local;
 }
 
 }  // namespace plyimpact::solver
