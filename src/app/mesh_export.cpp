@@ -1,12 +1,64 @@
 #include "app/mesh_export.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
 
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
+#include "output/atomic_file.hpp"
 #include "output/vtu_writer.hpp"
 
 namespace plyimpact::app {
+namespace {
+
+// The rigid impactor's surface as its own small .vtu (VTK_QUAD cells, cell field outward_normal):
+// output::Frame and its writer hold hexahedra only, and a separate file keeps them untouched. A few
+// thousand quads, so plain ASCII XML written here is enough; doubles at 17 digits are exact.
+void write_impactor_vtu(const mesh::ImpactorMesh& imp, const std::filesystem::path& path) {
+  const std::size_t np = imp.surface_coords.size() / 3, nq = imp.surface_quads.size() / 4;
+  std::string x;
+  char buf[96];
+  x += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" "
+       "header_type=\"UInt64\">\n<UnstructuredGrid>\n";
+  std::snprintf(buf, sizeof buf, "<Piece NumberOfPoints=\"%zu\" NumberOfCells=\"%zu\">\n", np, nq);
+  x += buf;
+  x += "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t a = 0; a < np; ++a) {
+    const double* p = &imp.surface_coords[3 * a];
+    std::snprintf(buf, sizeof buf, "%.17g %.17g %.17g\n", p[0], p[1], p[2]);
+    x += buf;
+  }
+  x += "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t q = 0; q < nq; ++q) {
+    const Index* c = &imp.surface_quads[4 * q];
+    x += std::to_string(c[0]) + " " + std::to_string(c[1]) + " " + std::to_string(c[2]) + " " + std::to_string(c[3]) + "\n";
+  }
+  x += "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+  for (std::size_t q = 1; q <= nq; ++q) x += std::to_string(4 * q) + "\n";
+  x += "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+  for (std::size_t q = 0; q < nq; ++q) x += "9\n";  // VTK_QUAD
+  x += "</DataArray>\n</Cells>\n<CellData>\n"
+       "<DataArray type=\"Float64\" Name=\"outward_normal\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  for (std::size_t q = 0; q < nq; ++q) {
+    const Index* c = &imp.surface_quads[4 * q];
+    const auto p = [&](int k, int i) { return imp.surface_coords[3 * std::size_t(c[k]) + i]; };
+    double d1[3], d2[3];
+    for (int i = 0; i < 3; ++i) {
+      d1[i] = p(2, i) - p(0, i);
+      d2[i] = p(3, i) - p(1, i);
+    }
+    double n[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+    const double len = std::hypot(n[0], n[1], n[2]);
+    std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g\n", n[0] / len, n[1] / len, n[2] / len);
+    x += buf;
+  }
+  x += "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  output::write_text_atomically(path, x);
+}
+
+}  // namespace
 
 std::vector<std::filesystem::path> export_mesh(const config::Scene& scene, const mesh::Mesh& mesh,
                                                const model::Model& model, const std::filesystem::path& dir) {
@@ -48,6 +100,11 @@ std::vector<std::filesystem::path> export_mesh(const config::Scene& scene, const
   const auto msh = dir / (scene.name + ".msh");
   output::write_vtu(f, vtu);
   mesh::write_msh(scene, mesh, msh.string());
+  if (mesh.impactor && mesh.impactor->rigid) {  // a deformable impactor's hexahedra are in the _mesh.vtu
+    const auto imp = dir / (scene.name + "_impactor.vtu");
+    write_impactor_vtu(*mesh.impactor, imp);
+    return {vtu, msh, imp};
+  }
   return {vtu, msh};
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -12,6 +13,7 @@
 
 #include "mesh/geo_scripts.hpp"
 #include "mesh/gmsh_session.hpp"
+#include "mesh/hex_boundary.hpp"
 
 namespace plyimpact::mesh {
 namespace {
@@ -34,7 +36,7 @@ void run_script(const std::string& name, const std::string& parameters) {
     gmsh_call("running geo/" + name + ".geo", [&] {
       gmsh::merge(path.string());
       gmsh::model::geo::synchronize();
-      gmsh::model::mesh::generate(2);
+      gmsh::model::mesh::generate(3);
     });
   } catch (...) {
     std::filesystem::remove(path);
@@ -82,67 +84,112 @@ ImpactorMesh impactor_mass_properties(const config::ImpactorSpec& s) {
   return out;
 }
 
-void add_impactor(const config::Scene& scene, Mesh& mesh) {
-  const auto& spec = *scene.impactor;
-  if (!spec.rigid)
-    throw InputError(msg() << spec.where.file << ":" << spec.where.line << ":" << spec.where.column << ": "
-                           << spec.where.key_path << ": a deformable (hex) impactor is not available yet; found "
-                           << "rigid: false; allowed rigid: true (surface and mass properties)");
-  if (spec.shape != Shape::Sphere && spec.shape != Shape::HemisphericalCylinder)
-    throw InputError(msg() << spec.where.file << ":" << spec.where.line << ":" << spec.where.column << ": "
-                           << spec.where.key_path << ".shape: this impactor shape is not available yet; found "
-                           << (spec.shape == Shape::Cube ? "cube" : "flat_cylinder")
-                           << "; allowed sphere or hemispherical_cylinder");
-  double top = 0;
-  for (std::size_t i = 2; i < mesh.coords.size(); i += 3) top = std::max(top, mesh.coords[i]);
-  const double r = spec.diameter / 2;
-  // Elements per quarter circumference (a cubed-sphere patch edge spans 90 degrees on the equator).
-  const int n = std::max(2, int(std::ceil(0.5 * std::numbers::pi * r / spec.element_size)));
-  GmshModel model("impactor");
-  if (spec.shape == Shape::Sphere) {
-    run_script("sphere", msg() << "R = " << r << "; N = " << n << ";");
-  } else {
-    const int m = std::max(1, int(std::ceil((spec.length - r) / spec.element_size)));
-    run_script("hemispherical_cylinder", msg() << "R = " << r << "; L = " << spec.length << "; N = " << n
-                                               << "; M = " << m << ";");
+namespace {
+
+// Script parameters: the element counts follow spec.element_size (N per quarter circumference, K
+// through the O-grid's shell or ring, M along a cylinder's body).
+struct Script {
+  std::string name, parameters;
+};
+
+// Exact text of a double (the default 6 digits would move the geometry off the exact shape).
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+Script script_for(const config::ImpactorSpec& spec) {
+  const double r = spec.diameter / 2, h = spec.element_size, pi = std::numbers::pi;
+  const auto count = [&](double length) { return std::to_string(std::max(1, int(std::ceil(length / h - 1e-9)))); };
+  const std::string n = std::to_string(std::max(2, int(std::ceil(0.5 * pi * r / h - 1e-9))));
+  // Core half-widths r / (2 sqrt 3) (cubed sphere) and r / (2 sqrt 2) (cylinder): the shell or ring
+  // is r (1 - 0.289) or r (1 - 0.354) thick on the axes.
+  const std::string k_sphere = count(r * (1 - 0.5 / std::sqrt(3.0))), k_ring = count(r * (1 - 0.5 / std::sqrt(2.0)));
+  switch (spec.shape) {
+    case Shape::Sphere:
+      return {"sphere", "R = " + num(r) + "; N = " + n + "; K = " + k_sphere + ";"};
+    case Shape::HemisphericalCylinder:
+      return {"hemispherical_cylinder", "R = " + num(r) + "; L = " + num(spec.length) + "; N = " + n +
+                                            "; M = " + count(spec.length - r) + "; K = " + k_sphere + ";"};
+    case Shape::FlatCylinder:
+      return {"flat_cylinder", "R = " + num(r) + "; L = " + num(spec.length) + "; N = " + n + "; M = " +
+                                   count(spec.length) + "; K = " + k_ring + ";"};
+    case Shape::Cube:
+      return {"cube", "D = " + num(spec.diameter) + "; N = " +
+                          std::to_string(std::max(2, int(std::ceil(spec.diameter / h - 1e-9)))) + ";"};
   }
-  ImpactorMesh imp = impactor_mass_properties(spec);
-  imp.rigid = true;
-  const double dx = spec.x, dy = spec.y, dz = top + spec.gap;
-  gmsh_call("reading the impactor surface", [&] {
-    std::vector<std::size_t> tags;
+  return {};
+}
+
+// The hexahedra of the current gmsh model, right-handed, over the nodes they use (the scripts'
+// construction points, such as a sphere's centre, are mesh nodes too and are left out).
+void read_hexes(std::vector<double>& coords, std::vector<Index>& hex) {
+  gmsh_call("reading the impactor mesh", [&] {
+    std::vector<std::size_t> tags, etags, enodes;
     std::vector<double> xyz, param;
     gmsh::model::mesh::getNodes(tags, xyz, param, -1, -1, true, false);
     std::size_t max_tag = 0;
     for (auto t : tags) max_tag = std::max(max_tag, t);
     std::vector<std::size_t> position(max_tag + 1, 0);
     for (std::size_t a = 0; a < tags.size(); ++a) position[tags[a]] = a;
-    std::vector<std::size_t> etags, enodes;
-    gmsh::model::mesh::getElementsByType(3, etags, enodes, -1);  // 4-node quadrangles
-    // Only nodes of the quads: the script's construction points (the centre) are mesh nodes too.
+    gmsh::model::mesh::getElementsByType(5, etags, enodes, -1);  // 8-node hexahedra
     std::vector<Index> index(max_tag + 1, -1);
-    for (std::size_t t : enodes)
+    for (std::size_t t : enodes) {
       if (index[t] < 0) {
-        index[t] = Index(imp.surface_coords.size() / 3);
-        const double* p = &xyz[3 * position[t]];
-        imp.surface_coords.insert(imp.surface_coords.end(), {p[0] + dx, p[1] + dy, p[2] + dz});
+        index[t] = Index(coords.size() / 3);
+        coords.insert(coords.end(), &xyz[3 * position[t]], &xyz[3 * position[t]] + 3);
       }
-    const double cx = dx, cy = dy, cz = dz + imp.centre_of_mass[2];
-    for (std::size_t q = 0; q < etags.size(); ++q) {
-      Index c[4];
-      for (int k = 0; k < 4; ++k) c[k] = index[enodes[4 * q + k]];
-      // Outward normal: the body is convex, so the normal must point away from its centroid.
-      const double* p[4];
-      for (int k = 0; k < 4; ++k) p[k] = &imp.surface_coords[3 * std::size_t(c[k])];
-      const double d1[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-      const double d2[3] = {p[3][0] - p[1][0], p[3][1] - p[1][1], p[3][2] - p[1][2]};
-      const double nrm[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
-      const double mid[3] = {(p[0][0] + p[2][0]) / 2 - cx, (p[0][1] + p[2][1]) / 2 - cy, (p[0][2] + p[2][2]) / 2 - cz};
-      if (nrm[0] * mid[0] + nrm[1] * mid[1] + nrm[2] * mid[2] < 0) std::swap(c[1], c[3]);
-      imp.surface_quads.insert(imp.surface_quads.end(), c, c + 4);
+      hex.push_back(index[t]);
     }
   });
-  imp.centre_of_mass = {dx, dy, dz + imp.centre_of_mass[2]};
+  orient_hexes(coords, hex);
+}
+
+}  // namespace
+
+void add_impactor(const config::Scene& scene, Mesh& mesh) {
+  const auto& spec = *scene.impactor;
+  double top = 0;
+  for (std::size_t i = 2; i < mesh.coords.size(); i += 3) top = std::max(top, mesh.coords[i]);
+  // Both kinds mesh the solid; a rigid impactor keeps only its boundary, so the two share a surface.
+  std::vector<double> coords;
+  std::vector<Index> hex;
+  {
+    GmshModel model("impactor");
+    const Script script = script_for(spec);
+    run_script(script.name, script.parameters);
+    read_hexes(coords, hex);
+  }
+  const double shift[3] = {spec.x, spec.y, top + spec.gap};  // nose (local origin) `gap` above the plate
+  for (std::size_t i = 0; i < coords.size(); ++i) coords[i] += shift[i % 3];
+
+  ImpactorMesh imp = impactor_mass_properties(spec);
+  imp.rigid = spec.rigid;
+  imp.centre_of_mass = {shift[0], shift[1], shift[2] + imp.centre_of_mass[2]};
+  const std::vector<Index> quads = boundary_quads(hex);
+  // Surface nodes numbered in order of first use by the quads.
+  std::vector<Index> surface_index(coords.size() / 3, -1);
+  for (Index n : quads) {
+    if (surface_index[std::size_t(n)] < 0) {
+      surface_index[std::size_t(n)] = Index(imp.surface_coords.size() / 3);
+      imp.surface_coords.insert(imp.surface_coords.end(), &coords[3 * std::size_t(n)], &coords[3 * std::size_t(n)] + 3);
+      imp.surface_nodes.push_back(n);  // made global below for a deformable impactor
+    }
+    imp.surface_quads.push_back(surface_index[std::size_t(n)]);
+  }
+  if (spec.rigid) {
+    imp.surface_nodes.clear();
+  } else {
+    // A separate body: its own nodes after the plate's, never merged with them.
+    const Index offset = Index(mesh.num_nodes());
+    mesh.coords.insert(mesh.coords.end(), coords.begin(), coords.end());
+    for (Index n : hex) mesh.hex.push_back(n + offset);
+    mesh.element_part.insert(mesh.element_part.end(), hex.size() / 8, spec.part);
+    if (!mesh.element_ply.empty()) mesh.element_ply.insert(mesh.element_ply.end(), hex.size() / 8, -1);
+    for (Index& n : imp.surface_nodes) n += offset;
+    imp.part = spec.part;
+  }
   mesh.impactor = std::move(imp);
 }
 

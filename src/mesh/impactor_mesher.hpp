@@ -1,7 +1,9 @@
-// The impactor: its surface from the gmsh scripts in geo/ (sphere.geo, hemispherical_cylinder.geo)
-// placed with its nose `gap` above the top of the plate, and its mass properties from the exact
-// shape (the faceted surface is only used for contact). A rigid impactor carries no volume
-// elements (a rigid body needs only its surface and mass properties).
+// The impactor, from the gmsh scripts in geo/ (sphere, hemispherical_cylinder, flat_cylinder,
+// cube), placed with its nose `gap` above the top of the plate. Every script meshes the solid in
+// hexahedra (O-grid / cubed-sphere blocks for the round shapes). A rigid impactor keeps only the
+// mesh's boundary quads and its mass properties (a rigid body needs no volume elements); a
+// deformable one adds the hexahedra to Mesh::hex as its own part, with nodes of its own. Mass
+// properties are those of the exact (not faceted) shape: mass = density x exact volume.
 #pragma once
 
 #include "config/scene.hpp"
@@ -10,7 +12,7 @@
 namespace plyimpact::mesh {
 
 /// Adds Mesh::impactor for scene.impactor (which must be set), above the highest node of `mesh`.
-/// @throws InputError for a shape or option not available yet, or if gmsh fails.
+/// @throws InputError if gmsh fails or produces a tangled element.
 void add_impactor(const config::Scene& scene, Mesh& mesh);
 
 /// Mass, centre of mass (nose tip at the origin, axis +z) and inertia about the centre of mass of

@@ -53,8 +53,11 @@ Grid make_grid(const config::LaminateSpec& lam) {
   return g;
 }
 
-// Builds the gmsh geometry and mesh; returns the volume tags of each ply.
-std::vector<std::vector<int>> build_gmsh(const config::LaminateSpec& lam, const Grid& g) {
+// Builds the gmsh geometry and mesh. The whole stack is one layered extrusion of the base patches
+// (a layer per element through each ply): extruding ply by ply costs gmsh's built-in kernel time
+// growing faster than quadratically with the number of plies (3.9 s for 16 plies of 25 patches,
+// against 0.03 s for the single extrusion), and the plies are told apart by z afterwards anyway.
+void build_gmsh(const Grid& g) {
   namespace geo = gmsh::model::geo;
   const std::size_t nx = g.bx.size(), ny = g.by.size();
   std::vector<double> xb{g.bx[0].x0}, yb{g.by[0].x0};
@@ -77,7 +80,7 @@ std::vector<std::vector<int>> build_gmsh(const config::LaminateSpec& lam, const 
       geo::addLine(pt(i, j), pt(i, j + 1), vline(i, j));
       geo::mesh::setTransfiniteCurve(vline(i, j), g.by[j].elements + 1, "Progression", g.by[j].ratio);
     }
-  gmsh::vectorpair top;
+  gmsh::vectorpair base;
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i) {
       // Counter-clockwise seen from +z: normal +z, so the extruded hexahedra are positive.
@@ -85,26 +88,18 @@ std::vector<std::vector<int>> build_gmsh(const config::LaminateSpec& lam, const 
       const int s = geo::addPlaneSurface({loop});
       geo::mesh::setTransfiniteSurface(s);
       geo::mesh::setRecombine(2, s);
-      top.emplace_back(2, s);
+      base.emplace_back(2, s);
     }
-  std::vector<std::vector<int>> ply_volumes;
-  for (const auto& ply : lam.plies) {
-    gmsh::vectorpair out;
-    geo::extrude(top, 0, 0, ply.thickness, out, {lam.elements_per_ply}, {}, true);
-    // Per input surface: [top, volume, laterals...] (G7).
-    gmsh::vectorpair next;
-    std::vector<int> vols;
-    for (std::size_t k = 1; k < out.size(); ++k)
-      if (out[k].first == 3) {
-        vols.push_back(out[k].second);
-        next.push_back(out[k - 1]);
-      }
-    top = next;
-    ply_volumes.push_back(vols);
-  }
+  // One layer per z interval of the grid; heights are cumulative fractions of the total thickness
+  // (gmsh's z values are snapped back onto g.z when read).
+  const double total = g.z.back();
+  std::vector<int> layers(g.z.size() - 1, 1);
+  std::vector<double> heights;
+  for (std::size_t k = 1; k < g.z.size(); ++k) heights.push_back(k + 1 == g.z.size() ? 1.0 : g.z[k] / total);
+  gmsh::vectorpair out;
+  geo::extrude(base, 0, 0, total, out, layers, heights, true);
   geo::synchronize();
   gmsh::model::mesh::generate(3);
-  return ply_volumes;
 }
 
 // Index of the value of `axis` nearest to v; throws if v is not within `tol` of it.
@@ -130,7 +125,7 @@ Mesh mesh_laminate(const config::Scene& scene) {
   const config::LaminateSpec& lam = *scene.laminate;
   const Grid g = make_grid(lam);
   GmshModel model("laminate");
-  const auto ply_volumes = gmsh_call("meshing the laminate", [&] { return build_gmsh(lam, g); });
+  gmsh_call("meshing the laminate", [&] { build_gmsh(g); });
 
   Mesh m;
   std::vector<int> level;  // (num_nodes, 3) grid indices of each node
@@ -155,36 +150,46 @@ Mesh mesh_laminate(const config::Scene& scene) {
       level[3 * a + 1] = j;
       level[3 * a + 2] = k;
     }
-    for (std::size_t p = 0; p < ply_volumes.size(); ++p)
-      for (int v : ply_volumes[p]) {
-        std::vector<std::size_t> etags, enodes;
-        gmsh::model::mesh::getElementsByType(5, etags, enodes, v);  // 5 = 8-node hexahedron
-        for (std::size_t e = 0; e < etags.size(); ++e) {
-          Index c[8];
-          for (int k = 0; k < 8; ++k) c[k] = node_of_tag[enodes[8 * e + k]];
-          // gmsh keeps the bottom quad's order; the elements are boxes, so the sign of the
-          // triple product at corner 0 decides: (x1 - x0) x (x3 - x0) . (x4 - x0) > 0, else mirror.
-          double edge[3][3];
-          for (int d = 0; d < 3; ++d) {
-            const double x0 = m.coords[3 * std::size_t(c[0]) + d];
-            edge[0][d] = m.coords[3 * std::size_t(c[1]) + d] - x0;
-            edge[1][d] = m.coords[3 * std::size_t(c[3]) + d] - x0;
-            edge[2][d] = m.coords[3 * std::size_t(c[4]) + d] - x0;
-          }
-          const auto& d = edge;
-          const double triple = (d[0][1] * d[1][2] - d[0][2] * d[1][1]) * d[2][0] +
-                                (d[0][2] * d[1][0] - d[0][0] * d[1][2]) * d[2][1] +
-                                (d[0][0] * d[1][1] - d[0][1] * d[1][0]) * d[2][2];
-          const bool right_handed = triple > 0;
-          if (!right_handed) {
-            std::swap(c[1], c[3]);
-            std::swap(c[5], c[7]);
-          }
-          m.hex.insert(m.hex.end(), c, c + 8);
-          m.element_part.push_back(lam.plies[p].part);
-          m.element_ply.push_back(int(p));
-        }
+    // Ply of each z interval (element layer).
+    std::vector<int> ply_of_layer(g.z.size() - 1);
+    for (std::size_t p = 0; p + 1 < g.ply_layer0.size(); ++p)
+      for (int k = g.ply_layer0[p]; k < g.ply_layer0[p + 1]; ++k) ply_of_layer[std::size_t(k)] = int(p);
+    // Elements are bucketed by ply so that they stay numbered ply by ply, bottom ply first.
+    std::vector<std::vector<Index>> ply_hex(lam.plies.size());
+    std::vector<std::size_t> etags, enodes;
+    gmsh::model::mesh::getElementsByType(5, etags, enodes, -1);  // 5 = 8-node hexahedron
+    for (std::size_t e = 0; e < etags.size(); ++e) {
+      Index c[8];
+      int lowest = int(g.z.size());
+      for (int k = 0; k < 8; ++k) {
+        c[k] = node_of_tag[enodes[8 * e + k]];
+        lowest = std::min(lowest, level[3 * std::size_t(c[k]) + 2]);
       }
+      // gmsh keeps the bottom quad's order; the elements are boxes, so the sign of the
+      // triple product at corner 0 decides: (x1 - x0) x (x3 - x0) . (x4 - x0) > 0, else mirror.
+      double edge[3][3];
+      for (int d = 0; d < 3; ++d) {
+        const double x0 = m.coords[3 * std::size_t(c[0]) + d];
+        edge[0][d] = m.coords[3 * std::size_t(c[1]) + d] - x0;
+        edge[1][d] = m.coords[3 * std::size_t(c[3]) + d] - x0;
+        edge[2][d] = m.coords[3 * std::size_t(c[4]) + d] - x0;
+      }
+      const auto& d = edge;
+      const double triple = (d[0][1] * d[1][2] - d[0][2] * d[1][1]) * d[2][0] +
+                            (d[0][2] * d[1][0] - d[0][0] * d[1][2]) * d[2][1] +
+                            (d[0][0] * d[1][1] - d[0][1] * d[1][0]) * d[2][2];
+      if (!(triple > 0)) {
+        std::swap(c[1], c[3]);
+        std::swap(c[5], c[7]);
+      }
+      auto& bucket = ply_hex[std::size_t(ply_of_layer[std::size_t(lowest)])];
+      bucket.insert(bucket.end(), c, c + 8);
+    }
+    for (std::size_t p = 0; p < ply_hex.size(); ++p) {
+      m.hex.insert(m.hex.end(), ply_hex[p].begin(), ply_hex[p].end());
+      m.element_part.insert(m.element_part.end(), ply_hex[p].size() / 8, lam.plies[p].part);
+      m.element_ply.insert(m.element_ply.end(), ply_hex[p].size() / 8, int(p));
+    }
   });
   const std::size_t expected = (g.x.size() - 1) * (g.y.size() - 1) * (g.z.size() - 1);
   if (m.num_elements() != expected || m.num_nodes() != g.x.size() * g.y.size() * g.z.size())

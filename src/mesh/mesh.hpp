@@ -31,8 +31,9 @@ struct NodeList {
 };
 
 // The impactor. Rigid: only its closed surface (own coordinates, outward quads) and its mass
-// properties, no volume elements. Deformable: a hex part inside Mesh::hex; surface_nodes then maps
-// the surface to Mesh nodes. Mass properties are those of the exact (not faceted) shape.
+// properties, no volume elements. Deformable: a hex part inside Mesh::hex (nodes not shared with
+// anything else); the surface is still given in its own coordinates and surface_nodes maps it to
+// Mesh nodes. Mass properties are those of the exact (not faceted) shape.
 struct ImpactorMesh {
   bool rigid = true;
   int part = -1;                         // deformable: index into Scene::parts
