@@ -58,7 +58,7 @@ void print_mesher_extras(const model::Model& m, std::ostream& out) {
     out << "  interface " << i.id << " (plies " << i.lower_ply + 1 << "/" << i.upper_ply + 1 << ", z = " << i.z
         << " m): " << i.lower_nodes.size() << " coincident node pairs, " << i.lower_segments.size() / 4
         << " segment pairs; tagged for delamination, not tied or released by the solver yet\n";
-  if (m.impactor) {
+  if (m.impactor && m.impactor_quads.empty()) {
     const auto& imp = *m.impactor;
     char buf[256];
     std::snprintf(buf, sizeof buf,
@@ -116,8 +116,31 @@ int check(const std::string& path, std::ostream& out) {
   out << "  subsystems:\n";
   for (const auto& s : model::subsystems(m)) out << "    [" << (s.active ? "on " : "off") << "] " << s.name << ": " << s.detail << "\n";
   const auto& st = solver.state();
-  std::snprintf(buf, sizeof buf, "  stable time step: %.6g s (TSSFAC %.3g applied), controlling element %d (part '%s')\n",
-                st.dt_next_half, m.control.tssfac, int(st.dt_element), solver.part_of_element(st.dt_element).c_str());
+  for (std::size_t i = 0; i < solver.contacts().size(); ++i) {
+    const auto& c = solver.contacts()[i];
+    const auto& ip = solver.initial_penetrations()[i];
+    std::snprintf(buf, sizeof buf,
+                  "  contact %s: SOFT %d, %zu segments, %zu slave nodes, penalty stiffness %.4g to %.4g N/m, "
+                  "contact stable step %.4g s\n",
+                  c.name().c_str(), c.soft(), c.num_segments(), c.num_slave_nodes(), c.stiffness_min(),
+                  c.stiffness_max(), c.stable_step());
+    out << buf;
+    if (ip.count == 0) {
+      out << "    initial penetrations: none\n";
+    } else {
+      std::snprintf(buf, sizeof buf, "    initial penetrations: %zu nodes, deepest %.4g m, %s\n", ip.count, ip.max_depth,
+                    ip.moved ? "removed by moving the nodes onto the surface" : "kept as a zero-force offset");
+      out << buf;
+    }
+  }
+  for (const auto& w : solver.warnings()) out << "  warning: " << w << "\n";
+  if (st.dt_contact_controls)
+    std::snprintf(buf, sizeof buf, "  stable time step: %.6g s (TSSFAC %.3g applied), controlled by contact stiffness\n",
+                  st.dt_next_half, m.control.tssfac);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "  stable time step: %.6g s (TSSFAC %.3g applied), controlling element %d (part '%s')\n",
+                  st.dt_next_half, m.control.tssfac, int(st.dt_element), solver.part_of_element(st.dt_element).c_str());
   out << buf;
   const double cycles = std::ceil(m.control.termination_time / st.dt_next_half);
   std::snprintf(buf, sizeof buf, "  termination time %.6g s: about %.0f cycles, %.3g element-cycles\n",

@@ -42,10 +42,18 @@ struct MatOrthotropicElastic {
   MaterialAxes axes;
 };
 
+// *MAT_020 (*MAT_RIGID): E and PR only set the contact stiffness. CMO = 1 with CON1 (translations:
+// 0 free, 1 x, 2 y, 3 z, 4 x+y, 5 y+z, 6 z+x, 7 all) and CON2 (rotations, same codes) fixes global
+// degrees of freedom of the body, as on the LS-DYNA card.
+struct MatRigid {
+  double RO = 0, E = 0, PR = 0;
+  int CMO = 0, CON1 = 0, CON2 = 0;
+};
+
 struct MaterialSpec {
   std::string name;
-  std::string card;  // "MAT_001" or "MAT_002" (LS-DYNA keyword number)
-  std::variant<MatElastic, MatOrthotropicElastic> params;
+  std::string card;  // "MAT_001", "MAT_002" or "MAT_020" (LS-DYNA keyword number)
+  std::variant<MatElastic, MatOrthotropicElastic, MatRigid> params;
   SourceLocation where;
 };
 
@@ -187,6 +195,54 @@ struct ImpactorSpec {
   SourceLocation where;
 };
 
+// Extra conditions on a rigid part (MAT_020): fixed degrees of freedom (x y z rx ry rz, global)
+// and a prescribed velocity of the centre of mass (translations) or angular velocity (rotations).
+struct RigidBodySpec {
+  std::string part;                          // PartSpec::name of a MAT_020 part, or "impactor"
+  std::array<bool, 6> fix{};                 // x y z rx ry rz
+  std::array<bool, 6> prescribed{};          // dofs that follow `curve`
+  CurveSpec curve;                           // m/s (rad/s for rotations) vs time
+  SourceLocation where;
+};
+
+// Planar rigid wall (*RIGIDWALL_PLANAR): nodes may not cross the plane through `point` with
+// normal `normal` (the allowed side). Finite when length_u > 0: the rectangle point + a u + b v,
+// 0 <= a <= length_u, 0 <= b <= length_v, v = normal x u. Moves at a constant `velocity`.
+struct RigidWallSpec {
+  std::string name;
+  Vec3 point{0, 0, 0};
+  Vec3 normal{0, 0, 1};       // normalised by the loader
+  Vec3 velocity{0, 0, 0};     // m/s
+  double friction = 0;        // Coulomb coefficient (0 frictionless)
+  Vec3 u{1, 0, 0};            // finite wall: first edge direction (normalised, orthogonal to normal)
+  double length_u = 0, length_v = 0;  // m; 0 = infinite
+  std::vector<std::string> parts;     // slave parts; empty = every deformable part
+  SourceLocation where;
+};
+
+// Penalty contact (*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE, *CONTACT_AUTOMATIC_SINGLE_SURFACE and
+// their ERODING_ variants). Card names and defaults as in LS-DYNA (theory.md section 8).
+struct ContactSpec {
+  enum class Type { SurfaceToSurface, SingleSurface };
+  enum class InitialPenetration { Move, Offset };
+  std::string name;
+  Type type = Type::SurfaceToSurface;
+  bool eroding = false;                       // ERODING_: rebuild the surface when elements are deleted
+  std::vector<std::string> surface_a, surface_b;  // part names ("impactor": the meshed rigid impactor)
+  int SOFT = 0;           // 0 bulk-modulus, 1 soft constraint, 2 segment-based
+  double SOFSCL = 0.1;    // SOFT 1 scale
+  double SLSFAC = 0.1;    // *CONTROL_CONTACT penalty scale
+  double SFS = 1, SFM = 1;      // side A / side B scale factors
+  double FS = 0, FD = 0, DC = 0, VDC = 0;  // friction and viscous damping (VDC in % of critical)
+  double PENMAX = 0;      // m, release depth; 0 = 0.4 x element thickness across the segment
+  double MAXPAR = 1.025;  // parametric tolerance of the projection
+  double DTSTIF = 0;      // s, step in the SOFT 1/2 stiffness; 0 = initial solution step
+  int BSORT = 10;         // bucket sort at least every BSORT cycles
+  int ENMASS = 0;         // eroding: 0 drop nodes left without elements, 1 keep them as mass points
+  InitialPenetration initial_penetration = InitialPenetration::Move;
+  SourceLocation where;
+};
+
 struct Scene {
   std::string name;       // scene file stem, used for the .pvd name
   std::string file;       // path of the YAML file
@@ -203,6 +259,10 @@ struct Scene {
   std::vector<InitialVelocitySpec> initial_velocities;
   std::optional<LaminateSpec> laminate;  // `laminate:` section: meshed by mesh/laminate_mesher
   std::optional<ImpactorSpec> impactor;  // `impactor:` section
+  std::vector<RigidBodySpec> rigid_bodies;
+  std::vector<RigidWallSpec> rigid_walls;
+  std::vector<ContactSpec> contacts;
+  Vec3 gravity{0, 0, 0};                 // m/s^2, body-force acceleration on every node (*LOAD_BODY)
 };
 
 }  // namespace plyimpact::config

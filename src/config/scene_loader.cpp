@@ -58,7 +58,7 @@ OutputSpec read_output(const Reader& r) {
 // ---------------------------------------------------------------- materials
 
 std::string read_card(const Reader& r) {
-  const std::string allowed = "MAT_001 (ELASTIC) or MAT_002 (ORTHOTROPIC_ELASTIC)";
+  const std::string allowed = "MAT_001 (ELASTIC), MAT_002 (ORTHOTROPIC_ELASTIC) or MAT_020 (RIGID)";
   const Reader c = r.at("card", allowed);
   c.require_scalar(allowed);
   std::string s = c.node().Scalar();
@@ -66,6 +66,7 @@ std::string read_card(const Reader& r) {
   for (char& ch : s) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
   if (s == "MAT_001" || s == "MAT_ELASTIC" || s == "ELASTIC") return "MAT_001";
   if (s == "MAT_002" || s == "MAT_ORTHOTROPIC_ELASTIC" || s == "ORTHOTROPIC_ELASTIC") return "MAT_002";
+  if (s == "MAT_020" || s == "MAT_RIGID" || s == "RIGID") return "MAT_020";
   c.fail("unknown material card", allowed);
 }
 
@@ -75,6 +76,21 @@ MatElastic read_elastic(const Reader& r) {
   m.RO = r.quantity("RO", u::density, Limits::positive("density"));
   m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus"));
   m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
+  return m;
+}
+
+MatRigid read_rigid(const Reader& r) {
+  r.allow_keys({"card", "RO", "E", "PR", "CMO", "CON1", "CON2"});
+  MatRigid m;
+  m.RO = r.quantity("RO", u::density, Limits::positive("density"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus (used for the contact stiffness)"));
+  m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
+  m.CMO = r.int_choice_or("CMO", 0, {0, 1});
+  m.CON1 = r.int_choice_or("CON1", 0, {0, 1, 2, 3, 4, 5, 6, 7});
+  m.CON2 = r.int_choice_or("CON2", 0, {0, 1, 2, 3, 4, 5, 6, 7});
+  if (m.CMO == 0 && (m.CON1 != 0 || m.CON2 != 0))
+    r.at(m.CON1 != 0 ? "CON1" : "CON2", "")
+        .fail("CON1/CON2 act only with CMO: 1 (global constraints)", "CMO: 1 together with CON1/CON2");
   return m;
 }
 
@@ -145,6 +161,8 @@ std::vector<MaterialSpec> read_materials(const Reader& r) {
     MaterialSpec spec{name, read_card(m), {}, m.where()};
     if (spec.card == "MAT_001")
       spec.params = read_elastic(m);
+    else if (spec.card == "MAT_020")
+      spec.params = read_rigid(m);
     else
       spec.params = read_orthotropic(m);
     out.push_back(std::move(spec));
@@ -369,15 +387,223 @@ std::vector<InitialVelocitySpec> read_initial_velocities(const Reader& r, const 
   return out;
 }
 
+// ---------------------------------------------------------------- rigid bodies, walls, contacts
+
+// Names a contact surface or rigid body may refer to: the scene's parts plus the meshed rigid
+// impactor ("impactor"), which has no part of its own.
+std::vector<std::string> body_names(const Scene& scene) {
+  auto names = names_of(scene.parts);
+  if (scene.impactor && scene.impactor->rigid) names.push_back("impactor");
+  return names;
+}
+
+bool is_rigid_part(const Scene& scene, const std::string& part) {
+  if (part == "impactor" && scene.impactor && scene.impactor->rigid) return true;
+  for (const auto& p : scene.parts)
+    if (p.name == part)
+      for (const auto& m : scene.materials)
+        if (m.name == p.material) return std::holds_alternative<MatRigid>(m.params);
+  return false;
+}
+
+std::vector<RigidBodySpec> read_rigid_bodies(const Reader& r, const Scene& scene) {
+  const char* shape = "{part, fix: [x, y, z, rx, ry, rz], velocity: {dofs, value | curve}}";
+  r.require_list(std::string("a list of ") + shape, false);
+  const auto names = body_names(scene);
+  std::vector<RigidBodySpec> out;
+  for (const Reader& b : r.items()) {
+    b.require_map(shape);
+    b.allow_keys({"part", "fix", "velocity"});
+    RigidBodySpec spec;
+    spec.where = b.where();
+    spec.part = b.reference("part", names, "part", "parts");
+    if (!is_rigid_part(scene, spec.part))
+      b.at("part", "").fail("the part is not rigid", "a part whose material is MAT_020, or the rigid impactor");
+    for (const auto& other : out)
+      if (other.part == spec.part) b.at("part", "").fail("rigid body listed twice", "one entry per rigid part");
+    const std::vector<std::string> dof_names = {"x", "y", "z", "rx", "ry", "rz"};
+    auto read_dof_list = [&](const Reader& l, std::array<bool, 6>& dofs) {
+      const char* allowed = "a non-empty list of distinct dofs from x, y, z, rx, ry, rz";
+      l.require_list(allowed, true);
+      for (const Reader& d : l.items()) {
+        const std::string n = d.as_choice(dof_names);
+        const int i = int(std::find(dof_names.begin(), dof_names.end(), n) - dof_names.begin());
+        if (dofs[i]) d.fail("dof listed twice", allowed);
+        dofs[i] = true;
+      }
+    };
+    if (const auto f = b.find("fix")) read_dof_list(*f, spec.fix);
+    if (const auto v = b.find("velocity")) {
+      v->require_map("{dofs: [z], value: <velocity>} or {dofs: [...], curve: [[t, v], ...]}");
+      v->allow_keys({"dofs", "value", "curve"});
+      read_dof_list(v->at("dofs", "a list of dofs from x, y, z, rx, ry, rz"), spec.prescribed);
+      if (v->exactly_one({"value", "curve"}) == "value")
+        spec.curve = CurveSpec{{0.0}, {v->quantity("value", u::velocity)}};
+      else
+        spec.curve = read_curve(v->at("curve", ""));
+      for (int i = 0; i < 6; ++i)
+        if (spec.fix[i] && spec.prescribed[i])
+          v->at("dofs", "").fail(msg() << "dof " << dof_names[i] << " is both fixed and prescribed",
+                                 "each dof either fixed or prescribed");
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+Vec3 unit_vector(const Reader& r, std::string_view key, Vec3 fallback) {
+  const auto v = r.find(key);
+  if (!v) return fallback;
+  Vec3 x = v->as_vec3(u::dimensionless);
+  const double n = std::hypot(x[0], x[1], x[2]);
+  if (!(n > 0)) v->fail("the vector must not be zero", "a non-zero direction [x, y, z]");
+  for (double& c : x) c /= n;
+  return x;
+}
+
+std::vector<RigidWallSpec> read_rigid_walls(const Reader& r, const Scene& scene) {
+  const char* shape = "{name, point: [x, y, z], normal: [nx, ny, nz], optional friction, velocity, size: [a, b], "
+                      "u: [ux, uy, uz], parts: [...]}";
+  r.require_list(std::string("a list of ") + shape, false);
+  const auto parts = names_of(scene.parts);
+  std::vector<RigidWallSpec> out;
+  for (const Reader& w : r.items()) {
+    w.require_map(shape);
+    w.allow_keys({"name", "point", "normal", "velocity", "friction", "size", "u", "parts"});
+    RigidWallSpec spec;
+    spec.where = w.where();
+    spec.name = w.at("name", "a wall name").as_name();
+    for (const auto& other : out)
+      if (other.name == spec.name) w.at("name", "").fail("duplicate rigid wall name", "a name not used by another wall");
+    spec.point = w.vec3_or("point", u::length, spec.point);
+    spec.normal = unit_vector(w, "normal", {0, 0, 1});
+    spec.velocity = w.vec3_or("velocity", u::velocity, spec.velocity);
+    spec.friction = w.quantity_or("friction", u::dimensionless, 0.0, Limits::non_negative("friction coefficient"));
+    if (const auto sz = w.find("size")) {
+      sz->require_list("[length_u, length_v] of the finite wall", false);
+      if (sz->node().size() != 2) sz->fail("expected two lengths", "[length_u, length_v]");
+      const auto it = sz->items();
+      spec.length_u = it[0].as_quantity(u::length, Limits::positive("wall length"));
+      spec.length_v = it[1].as_quantity(u::length, Limits::positive("wall width"));
+      Vec3 uu = unit_vector(w, "u", {1, 0, 0});
+      const double un = uu[0] * spec.normal[0] + uu[1] * spec.normal[1] + uu[2] * spec.normal[2];
+      for (int d = 0; d < 3; ++d) uu[d] -= un * spec.normal[d];
+      const double len = std::hypot(uu[0], uu[1], uu[2]);
+      if (len < 1e-6) (w.find("u") ? *w.find("u") : w).fail("u is parallel to the normal", "u: a direction in the wall plane");
+      for (double& c : uu) c /= len;
+      spec.u = uu;
+    } else if (w.has("u")) {
+      w.at("u", "").fail("u applies to a finite wall only", "size: [a, b] together with u");
+    }
+    if (const auto ps = w.find("parts")) {
+      ps->require_list("a list of part names", true);
+      for (const Reader& p : ps->items()) {
+        const std::string name = p.as_name();
+        if (std::find(parts.begin(), parts.end(), name) == parts.end())
+          p.fail("unknown part", "one of the parts: " + detail::join(parts));
+        if (is_rigid_part(scene, name))
+          p.fail("rigid walls act on deformable parts only", "a part whose material is not MAT_020");
+        spec.parts.push_back(name);
+      }
+    }
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
+std::vector<std::string> read_surface(const Reader& r, const std::vector<std::string>& names) {
+  std::vector<std::string> out;
+  auto one = [&](const Reader& n) {
+    const std::string name = n.as_name();
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      const std::string hint = detail::did_you_mean(name, names);
+      n.fail(hint.empty() ? "unknown part" : "unknown part (did you mean '" + hint + "'?)",
+             "one of the parts: " + detail::join(names));
+    }
+    if (std::find(out.begin(), out.end(), name) != out.end()) n.fail("part listed twice", "distinct parts");
+    out.push_back(name);
+  };
+  if (r.node().IsScalar()) one(r);
+  else {
+    r.require_list("a part name or a list of part names", true);
+    for (const Reader& n : r.items()) one(n);
+  }
+  return out;
+}
+
+std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
+  const char* shape = "{name, type, surfaces: [a, b] | parts: [...], SOFT, SOFSCL, SLSFAC, SFS, SFM, FS, FD, DC, VDC, ...}";
+  r.require_list(std::string("a list of ") + shape, false);
+  const auto names = body_names(scene);
+  std::vector<ContactSpec> out;
+  for (const Reader& c : r.items()) {
+    c.require_map(shape);
+    c.allow_keys({"name", "type", "surfaces", "parts", "SOFT", "SOFSCL", "SLSFAC", "SFS", "SFM", "FS", "FD", "DC",
+                  "VDC", "PENMAX", "MAXPAR", "DTSTIF", "BSORT", "ENMASS", "initial_penetration"});
+    ContactSpec spec;
+    spec.where = c.where();
+    spec.name = c.at("name", "a contact name").as_name();
+    for (const auto& other : out)
+      if (other.name == spec.name) c.at("name", "").fail("duplicate contact name", "a name not used by another contact");
+    const std::string type = c.at("type", "automatic_surface_to_surface, automatic_single_surface, "
+                                          "eroding_surface_to_surface or eroding_single_surface")
+                                 .as_choice({"automatic_surface_to_surface", "automatic_single_surface",
+                                             "eroding_surface_to_surface", "eroding_single_surface"});
+    spec.eroding = type.rfind("eroding", 0) == 0;
+    spec.type = type.find("single") != std::string::npos ? ContactSpec::Type::SingleSurface
+                                                         : ContactSpec::Type::SurfaceToSurface;
+    if (spec.type == ContactSpec::Type::SurfaceToSurface) {
+      if (c.has("parts")) c.at("parts", "").fail("parts is for single-surface contact", "surfaces: [a, b]");
+      const Reader s = c.at("surfaces", "[a, b]: two part names or lists of part names");
+      s.require_list("[a, b]: two part names or lists of part names", false);
+      if (s.node().size() != 2) s.fail("expected two surfaces", "[a, b]: two part names or lists of part names");
+      const auto items = s.items();
+      spec.surface_a = read_surface(items[0], names);
+      spec.surface_b = read_surface(items[1], names);
+      for (const auto& a : spec.surface_a)
+        if (std::find(spec.surface_b.begin(), spec.surface_b.end(), a) != spec.surface_b.end())
+          items[1].fail("part '" + a + "' is on both sides", "disjoint part lists (use a single-surface contact)");
+      if (is_rigid_part(scene, spec.surface_a[0]) && spec.surface_a.size() == 1 && spec.surface_b.size() == 1 &&
+          is_rigid_part(scene, spec.surface_b[0]))
+        s.fail("both surfaces are rigid", "at least one deformable surface");
+    } else {
+      if (c.has("surfaces")) c.at("surfaces", "").fail("surfaces is for surface-to-surface contact", "parts: [...]");
+      spec.surface_a = read_surface(c.at("parts", "a list of part names"), names);
+    }
+    spec.SOFT = c.int_choice_or("SOFT", 0, {0, 1, 2});
+    spec.SOFSCL = c.quantity_or("SOFSCL", u::dimensionless, spec.SOFSCL,
+                                Limits::interval(0, true, spec.type == ContactSpec::Type::SingleSurface ? 0.5 : 1.0,
+                                                 false, "SOFSCL"));
+    spec.SLSFAC = c.quantity_or("SLSFAC", u::dimensionless, spec.SLSFAC, Limits::positive("SLSFAC"));
+    spec.SFS = c.quantity_or("SFS", u::dimensionless, spec.SFS, Limits::positive("SFS"));
+    spec.SFM = c.quantity_or("SFM", u::dimensionless, spec.SFM, Limits::positive("SFM"));
+    spec.FS = c.quantity_or("FS", u::dimensionless, 0.0, Limits::non_negative("FS"));
+    spec.FD = c.quantity_or("FD", u::dimensionless, 0.0, Limits::non_negative("FD"));
+    spec.DC = c.quantity_or("DC", u::dimensionless, 0.0, Limits::non_negative("DC (s/m)"));
+    spec.VDC = c.quantity_or("VDC", u::dimensionless, 0.0, Limits::interval(0, false, 100, false, "VDC (% of critical)"));
+    spec.PENMAX = c.quantity_or("PENMAX", u::length, 0.0, Limits::non_negative("PENMAX"));
+    spec.MAXPAR = c.quantity_or("MAXPAR", u::dimensionless, spec.MAXPAR, Limits::interval(1, false, 1.5, false, "MAXPAR"));
+    spec.DTSTIF = c.quantity_or("DTSTIF", u::time, 0.0, Limits::non_negative("DTSTIF"));
+    spec.BSORT = int(c.integer_or("BSORT", spec.BSORT, Limits::interval(1, false, 1000, false, "BSORT")));
+    spec.ENMASS = c.int_choice_or("ENMASS", 0, {0, 1});
+    if (const auto ip = c.find("initial_penetration"))
+      spec.initial_penetration = ip->as_choice({"move", "offset"}) == "move" ? ContactSpec::InitialPenetration::Move
+                                                                             : ContactSpec::InitialPenetration::Offset;
+    out.push_back(std::move(spec));
+  }
+  return out;
+}
+
 // ---------------------------------------------------------------- whole scene
 
 Scene read_scene(const Reader& root, detail::Context& ctx) {
   const char* top = "a mapping with units, control, materials, sections, parts, mesh and optional output, "
-                    "node_sets, boundary_conditions, initial_velocity";
+                    "node_sets, boundary_conditions, initial_velocity, rigid_bodies, rigid_walls, contacts, gravity";
   if (!root.node().IsDefined() || root.node().IsNull()) root.fail("the scene is empty", top);
   root.require_map(top);
   root.allow_keys({"units", "control", "output", "materials", "sections", "parts", "mesh", "laminate", "impactor",
-                   "node_sets", "boundary_conditions", "initial_velocity"});
+                   "node_sets", "boundary_conditions", "initial_velocity", "rigid_bodies", "rigid_walls", "contacts",
+                   "gravity"});
   Scene scene;
   const Reader units_node = root.at("units", u::allowed_unit_systems());
   units_node.require_scalar(u::allowed_unit_systems());
@@ -420,6 +646,10 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
     for (auto& bc : read_bcs(*b, scene)) scene.boundary_conditions.push_back(std::move(bc));
   if (const auto iv = root.find("initial_velocity"))
     for (auto& v : read_initial_velocities(*iv, scene)) scene.initial_velocities.push_back(std::move(v));
+  if (const auto rb = root.find("rigid_bodies")) scene.rigid_bodies = read_rigid_bodies(*rb, scene);
+  if (const auto rw = root.find("rigid_walls")) scene.rigid_walls = read_rigid_walls(*rw, scene);
+  if (const auto c = root.find("contacts")) scene.contacts = read_contacts(*c, scene);
+  if (const auto g = root.find("gravity")) scene.gravity = g->as_vec3(u::acceleration);
   return scene;
 }
 

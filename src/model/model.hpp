@@ -19,6 +19,7 @@ namespace plyimpact::model {
 enum class MaterialKind {
   IsotropicElastic,    // *MAT_001: hypoelastic, objective Hughes-Winget stress update
   OrthotropicElastic,  // *MAT_002: total Lagrangian, S = C : E, sigma = F S F^T / J
+  Rigid,               // *MAT_020: no stress; the part moves as one rigid body (solver/rigid_body)
 };
 
 struct Material {
@@ -27,6 +28,9 @@ struct Material {
   double density = 0;       // reference density, kg/m^3
   double wave_modulus = 0;  // max over directions of rho c^2 (Pa): time step, hourglass, bulk q
   double wave_speed = 0;    // sqrt(wave_modulus / density)
+  // Bulk modulus K for the SOFT 0 contact stiffness (Pa): E / (3 (1 - 2 nu)) for MAT_001/MAT_020,
+  // the Reuss bound 1 / sum_{i,j<=3} S_ij for MAT_002 (our choice; LS-DYNA's is not published).
+  double bulk_modulus = 0;
   material::IsotropicConstants iso;    // MAT_001
   material::Stiffness6 c_material{};   // MAT_002, in material axes
   config::MaterialAxes axes;           // MAT_002
@@ -55,6 +59,7 @@ struct ElementBlock {
   // for total-Lagrangian materials with ELFORM 1, where F = J_x J_X^-1 at the centre (no gather of
   // reference coordinates and no matrix inverse in the cycle).
   std::vector<double> reference_jacobian_inverse;
+  bool rigid = false;  // MAT_020: not in the element schedule; its nodes follow a RigidBody
   std::size_t size() const { return element_id.size(); }
   int points() const { return elform == 2 ? 8 : 1; }
   HourglassKind hourglass() const {
@@ -103,6 +108,44 @@ struct Schedule {
   std::vector<std::vector<int>> colors;  // chunk indices per colour
 };
 
+// A rigid body (*MAT_020 part, or the meshed surface-only impactor). Its nodes are slaved: the solver
+// sums their forces and moments, integrates the body and sets their positions and velocities.
+struct RigidBody {
+  std::string name;              // part name, or "impactor"
+  int part = -1;                 // index into Model::parts; -1 for the surface-only impactor
+  std::vector<Index> nodes;      // slaved nodes (sorted)
+  double mass = 0;               // kg
+  Vec3 centre{0, 0, 0};          // centre of mass at t = 0, m
+  Mat3 inertia{};                // about the centre of mass, global axes at t = 0, kg m^2
+  Vec3 velocity{0, 0, 0};        // initial centre-of-mass velocity, m/s
+  Vec3 angular_velocity{0, 0, 0};  // initial, rad/s
+  std::array<bool, 6> fixed{};   // x y z rx ry rz (global)
+  std::array<int, 6> curve{-1, -1, -1, -1, -1, -1};  // prescribed dof -> index into Model::curves
+};
+
+// Planar rigid wall; see config::RigidWallSpec. nodes: the slave nodes (deformable, with mass).
+struct RigidWall {
+  std::string name;
+  Vec3 point{0, 0, 0}, normal{0, 0, 1}, velocity{0, 0, 0};
+  Vec3 u{1, 0, 0}, v{0, 1, 0};   // in-plane axes of a finite wall (v = normal x u)
+  double length_u = 0, length_v = 0;  // 0: infinite
+  double friction = 0;
+  std::vector<Index> nodes;
+};
+
+// One side of a contact: element blocks whose exterior faces form the surface, and/or the meshed
+// rigid impactor's surface quads (Model::impactor_quads).
+struct ContactSide {
+  std::vector<int> blocks;
+  bool impactor = false;
+  std::string label;   // part names, for messages
+};
+
+struct Contact {
+  config::ContactSpec spec;
+  ContactSide a, b;    // b unused for single-surface contact
+};
+
 struct Model {
   std::string name;
   config::ControlSpec control;
@@ -125,6 +168,17 @@ struct Model {
   std::vector<mesh::Interface> interfaces;     // delaminating interfaces (coincident node pairs, segments)
   bool interfaces_bonded = false;  // true: the pairs are merged in the element connectivity (no tiebreak yet)
   std::optional<mesh::ImpactorMesh> impactor;  // impactor surface and mass properties
+  // Contact and rigid bodies (built only when the scene asks for them).
+  std::vector<RigidBody> rigid_bodies;
+  std::vector<RigidWall> rigid_walls;
+  std::vector<Contact> contacts;
+  Vec3 gravity{0, 0, 0};                // m/s^2
+  // The rigid impactor's surface, when a contact or rigid body uses it: its nodes are appended to
+  // the model's nodes (mass = impactor mass / number of surface nodes, for the contact stiffness)
+  // and these quads index them. impactor_bulk_modulus: from its material, 0 if none (then its
+  // segments take the opposite side's stiffness).
+  std::vector<Index> impactor_quads;    // (num_quads, 4)
+  double impactor_bulk_modulus = 0;
 
   std::size_t num_nodes() const { return mass.size(); }
   std::size_t num_elements() const;
@@ -132,6 +186,10 @@ struct Model {
 
 // Builds and validates the model. Throws InputError naming the element, part or card at fault.
 Model build_model(const config::Scene& scene, const mesh::Mesh& mesh);
+
+// Part of build_model: rigid bodies (MAT_020 parts, the meshed impactor), rigid walls, contacts and
+// gravity from the scene; appends the rigid impactor's surface nodes when something uses them.
+void add_rigid_bodies_and_contacts(const config::Scene& scene, Model& model);
 
 // Chunks of at most `chunk_size` elements, greedily coloured so that chunks of one colour share no
 // node. The chunk size is a constant (not the thread count) so results do not depend on threads.

@@ -25,12 +25,22 @@ Material make_material(const config::MaterialSpec& spec) {
     m.density = iso->RO;
     m.iso = material::isotropic_constants(*iso);
     m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
+    m.bulk_modulus = iso->E / (3 * (1 - 2 * iso->PR));
+  } else if (const auto* rig = std::get_if<config::MatRigid>(&spec.params)) {
+    m.kind = MaterialKind::Rigid;
+    m.density = rig->RO;
+    m.iso = material::isotropic_constants(config::MatElastic{rig->RO, rig->E, rig->PR});
+    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
+    m.bulk_modulus = rig->E / (3 * (1 - 2 * rig->PR));
   } else {
     const auto& ortho = std::get<config::MatOrthotropicElastic>(spec.params);
     m.kind = MaterialKind::OrthotropicElastic;
     m.density = ortho.RO;
     m.c_material = material::orthotropic_stiffness(ortho, spec.where);
     m.wave_modulus = material::max_wave_modulus(m.c_material);
+    const double s_sum = 1 / ortho.EA + 1 / ortho.EB + 1 / ortho.EC -
+                         2 * (ortho.PRBA / ortho.EB + ortho.PRCA / ortho.EC + ortho.PRCB / ortho.EC);
+    m.bulk_modulus = s_sum > 0 ? 1 / s_sum : m.wave_modulus / 3;
     m.axes = ortho.axes;
     if (m.axes.AOPT != 3 && m.axes.BETA != 0.0)
       throw InputError(at(spec.where) << "BETA on the material card acts only with AOPT 3 (as in LS-DYNA); found "
@@ -124,6 +134,7 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
     block.qm = sec.QM;
     block.q1 = sec.Q1;
     block.q2 = sec.Q2;
+    block.rigid = std::holds_alternative<config::MatRigid>(scene.materials[part.material].params);
     part.block = int(model.blocks.size());
     model.blocks.push_back(std::move(block));
     model.parts.push_back(part);
@@ -277,6 +288,7 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
   model.element_ply = mesh.element_ply;
   model.interfaces = mesh.interfaces;
   model.impactor = mesh.impactor;
+  add_rigid_bodies_and_contacts(scene, model);
   model.schedule = make_schedule(model.blocks, num_nodes);
   return model;
 }

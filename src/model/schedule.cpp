@@ -7,6 +7,7 @@ namespace plyimpact::model {
 Schedule make_schedule(const std::vector<ElementBlock>& blocks, std::size_t num_nodes, Index chunk_size) {
   Schedule s;
   for (int b = 0; b < int(blocks.size()); ++b) {
+    if (blocks[b].rigid) continue;  // rigid elements carry no stress: nothing to update
     const Index n = Index(blocks[b].size());
     for (Index begin = 0; begin < n; begin += chunk_size) s.chunks.push_back({b, begin, std::min(n, begin + chunk_size)});
   }

@@ -32,6 +32,23 @@ std::vector<std::string> history_columns(const model::Model& model) {
                                    "total_energy", "energy_ratio", "dt_element"};
   for (int set : model.constrained_sets)
     for (const char* c : {"_fx", "_fy", "_fz"}) cols.push_back("reaction_" + model.node_sets[set].name + c);
+  // Contact, rigid-wall and rigid-body columns only when the scene has them.
+  if (!model.contacts.empty()) {
+    cols.push_back("contact_energy");
+    cols.push_back("friction_energy");
+    for (const auto& c : model.contacts)
+      for (const char* q : {"_fx", "_fy", "_fz", "_normal", "_tangential"})
+        cols.push_back("contact_" + c.spec.name + q);
+  }
+  if (!model.rigid_walls.empty()) {
+    cols.push_back("rigidwall_energy");
+    for (const auto& w : model.rigid_walls)
+      for (const char* q : {"_normal", "_tangential"}) cols.push_back("wall_" + w.name + q);
+  }
+  for (const auto& b : model.rigid_bodies)
+    for (const char* q : {"_x", "_y", "_z", "_vx", "_vy", "_vz", "_ax", "_ay", "_az", "_contact_fx", "_contact_fy",
+                          "_contact_fz"})
+      cols.push_back("rigid_" + b.name + q);
   return cols;
 }
 
@@ -41,6 +58,21 @@ void add_history_row(const Solver& solver, output::HistoryTable& table) {
   std::vector<double> row = {e.time,     s.dt_prev_half, e.kinetic,       e.internal,           e.hourglass,
                              e.bulk_viscous, e.external_work, e.total(), solver.energy_ratio(), double(s.dt_element)};
   row.insert(row.end(), s.reaction.begin(), s.reaction.end());
+  if (!solver.contacts().empty()) {
+    row.push_back(e.contact);
+    row.push_back(e.friction);
+    for (const auto& c : solver.contacts()) {
+      const auto& f = c.forces();
+      row.insert(row.end(), {f.resultant[0], f.resultant[1], f.resultant[2], f.normal, f.tangential});
+    }
+  }
+  if (!solver.rigid_walls().empty()) {
+    row.push_back(e.rigid_wall);
+    for (const auto& w : solver.rigid_walls()) row.insert(row.end(), {w.normal_force(), w.tangential_force()});
+  }
+  for (const auto& b : solver.rigid_bodies())
+    row.insert(row.end(), {b.x[0], b.x[1], b.x[2], b.v[0], b.v[1], b.v[2], b.a[0], b.a[1], b.a[2], b.contact_force[0],
+                           b.contact_force[1], b.contact_force[2]});
   table.add_row(row);
 }
 
@@ -113,6 +145,11 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
       en["hourglass"] = e.hourglass;
       en["bulk_viscous"] = e.bulk_viscous;
       en["external_work"] = e.external_work;
+      if (!model.contacts.empty()) {
+        en["contact"] = e.contact;
+        en["friction"] = e.friction;
+      }
+      if (!model.rigid_walls.empty()) en["rigid_wall"] = e.rigid_wall;
       en["total"] = e.total();
       en["energy_ratio"] = solver->energy_ratio();
       j["final_energies"] = en;
@@ -131,6 +168,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   std::unique_ptr<Solver> solver;
   try {
     solver = std::make_unique<Solver>(model);
+    for (const auto& w : solver->warnings()) report.warnings.push_back(w);
     add_history_row(*solver, history);
     write_frame(*solver);
     double next_frame = frame_interval, next_history = history_interval, next_progress = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <omp.h>
 
 #include "core/error.hpp"
@@ -14,6 +15,21 @@ constexpr std::size_t kNodeChunk = 4096;  // fixed (not per thread) so sums do n
 // element pass (and an oversubscribed machine makes each barrier cost a time slice): run serially.
 // The arithmetic and the summation order are the same either way.
 constexpr std::size_t kParallelMinElements = 8192;
+
+void merge(ChunkResult& total, const ChunkResult& r) {
+  total.internal_energy += r.internal_energy;
+  total.hourglass_energy += r.hourglass_energy;
+  total.bulk_viscous_energy += r.bulk_viscous_energy;
+  if (r.dt_element >= 0 && (total.dt_element < 0 || r.dt_min < total.dt_min)) {
+    total.dt_min = r.dt_min;
+    total.dt_element = r.dt_element;
+  }
+  if (r.bad_element >= 0 && total.bad_element < 0) {
+    total.bad_element = r.bad_element;
+    total.bad_volume = r.bad_volume;
+    total.bad_is_nan = r.bad_is_nan;
+  }
+}
 }
 
 Solver::Solver(const model::Model& model) : model_(model) {
@@ -21,8 +37,19 @@ Solver::Solver(const model::Model& model) : model_(model) {
   state_.x = model.X;
   state_.v = model.v0;
   state_.f.assign(3 * n, 0.0);
+  // Rigid-body nodes move with their body: zero mass and inverse mass in the nodal update.
+  node_mass_ = model.mass;
+  node_body_.assign(n, -1);
+  for (std::size_t b = 0; b < model.rigid_bodies.size(); ++b)
+    for (Index node : model.rigid_bodies[b].nodes) {
+      node_body_[node] = int(b);
+      node_mass_[node] = 0.0;
+    }
+  if (!model.rigid_bodies.empty()) rigid_ = std::make_unique<RigidBodies>(model);
   inverse_mass_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) inverse_mass_[i] = model.mass[i] > 0 ? 1.0 / model.mass[i] : 0.0;
+  for (std::size_t i = 0; i < n; ++i) inverse_mass_[i] = node_mass_[i] > 0 ? 1.0 / node_mass_[i] : 0.0;
+  alive_.resize(model.blocks.size());
+  chunk_ranges_.resize(model.schedule.chunks.size());
   state_.blocks.resize(model.blocks.size());
   for (std::size_t b = 0; b < model.blocks.size(); ++b) {
     const auto& blk = model.blocks[b];
@@ -59,11 +86,110 @@ Solver::Solver(const model::Model& model) : model_(model) {
   check_after_pass(0.0);
   state_.dt_initial = state_.dt_next_half;
 
-  double ke = 0;
+  // Contacts (built only when the scene defines them), initial penetrations, contact time step.
+  contacts_.reserve(model.contacts.size());
+  for (const auto& c : model.contacts) {
+    contacts_.emplace_back(model, c, state_.x, state_.dt_initial);
+    initial_penetrations_.push_back(contacts_.back().resolve_initial_penetrations(state_.x));
+  }
+  for (const auto& w : model.rigid_walls) walls_.emplace_back(w);
+  double dt_contact = std::numeric_limits<double>::infinity();
+  std::string stiffest;
+  for (const auto& c : contacts_)
+    if (c.stable_step() < dt_contact) {
+      dt_contact = c.stable_step();
+      stiffest = c.name();
+    }
+  if (std::isfinite(dt_contact)) {
+    state_.dt_contact = dt_contact;
+    const double dt_elements = state_.dt_next_half;
+    if (model.control.tssfac * dt_contact < dt_elements) {
+      state_.dt_next_half = model.control.tssfac * dt_contact;
+      state_.dt_contact_controls = true;
+      state_.dt_initial = state_.dt_next_half;
+      warnings_.push_back(msg() << "contact '" << stiffest << "': the stiffest penalty spring's frequency exceeds the "
+                                << "element step by a factor " << dt_elements / state_.dt_next_half
+                                << "; the time step is reduced from " << dt_elements << " s to "
+                                << state_.dt_next_half << " s (lower SLSFAC/SFS/SFM or use SOFT 1)");
+    }
+  }
+  external_and_contact_forces(0.0);
+
+  double ke = rigid_ ? rigid_->kinetic_energy() : 0.0;
   for (std::size_t i = 0; i < n; ++i)
-    for (int d = 0; d < 3; ++d) ke += 0.5 * model.mass[i] * state_.v[3 * i + d] * state_.v[3 * i + d];
+    for (int d = 0; d < 3; ++d) ke += 0.5 * node_mass_[i] * state_.v[3 * i + d] * state_.v[3 * i + d];
   state_.last_balance = Energies{0.0, ke, 0.0, 0.0, 0.0, 0.0};
   state_.initial_total_energy = ke;
+}
+
+const std::vector<RigidBodyState>& Solver::rigid_bodies() const {
+  static const std::vector<RigidBodyState> none;
+  return rigid_ ? rigid_->states() : none;
+}
+
+void Solver::external_and_contact_forces(double dt) {
+  State& s = state_;
+  const std::size_t n = model_.num_nodes();
+  const Vec3& g = model_.gravity;
+  if (g[0] != 0 || g[1] != 0 || g[2] != 0)
+    for (std::size_t i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d) s.f[3 * i + d] += model_.mass[i] * g[d];
+  double ec = 0, ef = 0;
+  for (auto& c : contacts_) {
+    c.apply(s.x.data(), s.v.data(), s.f.data(), dt);
+    ec += c.energy();
+    ef += c.friction_energy();
+  }
+  s.contact_energy = ec;
+  s.friction_energy = ef;
+  const double dt_n1 = 0.5 * (s.dt_prev_half + s.dt_next_half);
+  double ew = 0;
+  for (auto& w : walls_) {
+    w.apply(s.x.data(), s.v.data(), s.f.data(), model_.mass.data(), s.time, dt_n1, s.dt_next_half, dt);
+    ew += w.energy();
+  }
+  s.rigidwall_energy = ew;
+  if (rigid_) {
+    auto& bodies = rigid_->states();
+    for (auto& b : bodies) b.contact_force = {0, 0, 0};
+    for (const auto& c : contacts_) {
+      const auto& nodes = c.force_nodes();
+      const auto& fc = c.node_forces();
+      for (std::size_t u = 0; u < nodes.size(); ++u)
+        if (const int b = node_body_[nodes[u]]; b >= 0)
+          for (int d = 0; d < 3; ++d) bodies[b].contact_force[d] += fc[3 * u + d];
+    }
+  }
+}
+
+void Solver::delete_elements(const std::vector<Index>& ids) {
+  for (Index id : ids) {
+    bool found = false;
+    for (std::size_t b = 0; b < model_.blocks.size() && !found; ++b) {
+      const auto& ids_b = model_.blocks[b].element_id;
+      const auto it = std::lower_bound(ids_b.begin(), ids_b.end(), id);
+      if (it == ids_b.end() || *it != id) continue;
+      if (alive_[b].empty()) alive_[b].assign(ids_b.size(), 1);
+      alive_[b][std::size_t(it - ids_b.begin())] = 0;
+      found = true;
+    }
+    if (!found) throw RunError(msg() << "cannot delete element " << id << ": no such element");
+  }
+  for (std::size_t c = 0; c < model_.schedule.chunks.size(); ++c) {
+    const auto& chunk = model_.schedule.chunks[c];
+    const auto& alive = alive_[chunk.block];
+    auto& ranges = chunk_ranges_[c];
+    ranges.clear();
+    if (alive.empty()) continue;
+    for (Index e = chunk.begin; e < chunk.end;) {
+      while (e < chunk.end && !alive[e]) ++e;
+      const Index start = e;
+      while (e < chunk.end && alive[e]) ++e;
+      if (e > start) ranges.push_back({start, e});
+    }
+  }
+  for (auto& c : contacts_)
+    if (c.eroding()) c.rebuild(alive_, state_.x);
 }
 
 void Solver::step() {
@@ -79,7 +205,7 @@ void Solver::step() {
   double* __restrict x = s.x.data();
   double* __restrict v = s.v.data();
   const double* __restrict f = s.f.data();
-  const double* __restrict mass = model_.mass.data();
+  const double* __restrict mass = node_mass_.data();
   const double* __restrict inv_mass = inverse_mass_.data();
   const bool parallel = model_.num_elements() >= kParallelMinElements;
 #pragma omp parallel for schedule(static) if (parallel)
@@ -111,18 +237,29 @@ void Solver::step() {
   }
   double ke = 0;
   for (double k : node_chunk_ke_) ke += k;
+  double rigid_work = 0;
+  if (rigid_) ke += rigid_->step(f, x, v, dt_n, dt_half, first, curve_value_, rigid_work);
+  const double gravity_work_at_n = gravity_work_;
+  const Vec3& g = model_.gravity;
+  if (g[0] != 0 || g[1] != 0 || g[2] != 0)
+    for (std::size_t i = 0; i < n; ++i)
+      gravity_work_ += dt_half * model_.mass[i] * (g[0] * v[3 * i] + g[1] * v[3 * i + 1] + g[2] * v[3 * i + 2]);
   // The constraint work of this step spans t^{n-1/2}..t^{n+1/2}; half of it belongs before t^n,
   // where the kinetic energy is evaluated (average of the half-step velocities).
-  double work = 0;
+  double work = rigid_work;
   for (double w : constraint_work_) work += w;
-  const double external_work_at_n = s.external_work + 0.5 * work;
+  const double external_work_at_n = s.external_work + 0.5 * work + gravity_work_at_n;
   s.external_work += work;
   for (std::size_t set = 0; set < set_constraints_.size(); ++set) {
     double r[3] = {0, 0, 0};
     for (int c : set_constraints_[set]) r[model_.constraints[c].dof % 3] += constraint_force_[c];
     for (int d = 0; d < 3; ++d) s.reaction[3 * set + d] = r[d];
   }
-  s.last_balance = Energies{s.time, ke, s.internal_energy, s.hourglass_energy, s.bulk_viscous_energy, external_work_at_n};
+  s.last_balance = Energies{s.time,           ke,
+                            s.internal_energy, s.hourglass_energy,
+                            s.bulk_viscous_energy, external_work_at_n,
+                            s.contact_energy,  s.friction_energy,
+                            s.rigidwall_energy};
   if (!std::isfinite(ke))
     throw RunError(msg() << "non-finite kinetic energy at cycle " << s.cycle << ", time " << s.time
                          << " s: a nodal velocity became NaN or infinite (unstable run; check the time step, "
@@ -133,6 +270,7 @@ void Solver::step() {
   s.dt_prev_half = dt_half;
   ++s.cycle;
   check_after_pass(dt_half);
+  external_and_contact_forces(dt_half);
 }
 
 void Solver::element_pass(double dt) {
@@ -151,8 +289,16 @@ void Solver::element_pass(double dt) {
         const int c = color[i];
         const auto& chunk = schedule.chunks[c];
         chunk_results_[c] = ChunkResult{};
-        update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], chunk.begin, chunk.end, x, v, f,
-                        dt, chunk_results_[c]);
+        if (alive_[chunk.block].empty()) {
+          update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], chunk.begin, chunk.end, x, v, f,
+                          dt, chunk_results_[c]);
+        } else {  // elements deleted: the alive ranges of this chunk, in order
+          for (const auto& [begin, end] : chunk_ranges_[c]) {
+            ChunkResult r;
+            update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], begin, end, x, v, f, dt, r);
+            merge(chunk_results_[c], r);
+          }
+        }
       }
     }
   }
@@ -189,7 +335,8 @@ void Solver::check_after_pass(double dt_used) {
                          << " s: the element inverted (excessive distortion, hourglassing or a too large step)");
   }
   if (total.dt_element < 0) throw RunError("the model has no deformable element, so no stable time step exists");
-  s.dt_next_half = model_.control.tssfac * total.dt_min;
+  s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < total.dt_min;
+  s.dt_next_half = model_.control.tssfac * (s.dt_contact_controls ? s.dt_contact : total.dt_min);
   s.dt_element = total.dt_element;
   if (s.dt_initial > 0 && s.dt_next_half < model_.control.dt_min_ratio * s.dt_initial)
     throw RunError(msg() << "time step collapsed to " << s.dt_next_half << " s, below " << model_.control.dt_min_ratio

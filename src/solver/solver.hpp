@@ -3,15 +3,23 @@
 //   x^{n+1}   = x^n + dt^{n+1/2} v^{n+1/2}
 //   f^{n+1}   = element pass at x^{n+1} with v^{n+1/2}; dt^{n+3/2} = TSSFAC * min_e dt_e
 // Velocity boundary conditions are imposed on v^{n+1/2}; the force they exert (reaction) and its
-// work (external work) are recorded. The solver stops with a RunError naming the element, time and
+// work (external work) are recorded. After the element pass, gravity, penalty contact
+// (contact/penalty_contact) and rigid walls (contact/rigid_wall) add their forces, so f^{n+1}
+// includes them; rigid bodies (solver/rigid_body) take the forces of their slaved nodes. The
+// stiffest contact spring's stable step enters the time step. The solver stops with a RunError naming the element, time and
 // cause when an element inverts, a value becomes non-finite or the step collapses.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "contact/penalty_contact.hpp"
+#include "contact/rigid_wall.hpp"
+
 #include "model/model.hpp"
 #include "solver/element_update.hpp"
+#include "solver/rigid_body.hpp"
 #include "solver/state.hpp"
 
 namespace plyimpact::solver {
@@ -42,9 +50,23 @@ class Solver {
   // Name of the part that owns element `id` (1-based), for messages.
   std::string part_of_element(Index id) const;
 
+  // Deletes elements (1-based ids) from the next cycle on: they no longer carry stress, their
+  // energies stay in the totals (eroded), and eroding contacts rebuild their surfaces at once.
+  void delete_elements(const std::vector<Index>& ids);
+
+  const std::vector<contact::PenaltyContact>& contacts() const { return contacts_; }
+  const std::vector<contact::RigidWallConstraint>& rigid_walls() const { return walls_; }
+  const std::vector<RigidBodyState>& rigid_bodies() const;
+  // Initial penetrations found at t = 0, one per contact (for `check`).
+  const std::vector<contact::InitialPenetrations>& initial_penetrations() const { return initial_penetrations_; }
+  // Diagnoses found while setting up (e.g. the contact step controls the time step).
+  const std::vector<std::string>& warnings() const { return warnings_; }
+
  private:
   void element_pass(double dt);
   void check_after_pass(double dt_used);
+  // Gravity, contact and rigid-wall forces at x^{n+1}; dt = Delta t^{n+1/2} (0 at t = 0).
+  void external_and_contact_forces(double dt);
 
   const model::Model& model_;
   State state_;
@@ -56,6 +78,17 @@ class Solver {
   std::vector<ChunkResult> chunk_results_; // (num chunks)
   std::vector<double> node_chunk_ke_;      // (num node chunks) deterministic kinetic-energy sums
   std::vector<std::vector<int>> set_constraints_;  // per constrained set: constraint indices
+  std::vector<double> node_mass_;          // (num_nodes) lumped mass, 0 at rigid-body nodes (their body moves them)
+  std::vector<int> node_body_;             // (num_nodes) rigid body index, -1
+  std::unique_ptr<RigidBodies> rigid_;     // null without rigid bodies
+  std::vector<contact::PenaltyContact> contacts_;
+  std::vector<contact::RigidWallConstraint> walls_;
+  std::vector<contact::InitialPenetrations> initial_penetrations_;
+  std::vector<std::string> warnings_;
+  double gravity_work_ = 0;                // J, work of gravity up to t^n (Σ m g . (x - x0))
+  // Element deletion: alive[b][e] (empty vector = all alive) and, per chunk, its alive ranges.
+  contact::AliveMask alive_;
+  std::vector<std::vector<std::pair<Index, Index>>> chunk_ranges_;  // empty = whole chunk
 };
 
 }  // namespace plyimpact::solver

@@ -22,12 +22,15 @@ struct BlockState {
   std::vector<double> volume;            // (num_elements) current volume, m^3 (updated every cycle)
 };
 
-// Global energy balance at one time (J). total = kinetic + internal + hourglass + bulk_viscous;
-// ratio = total / (initial total + external work), 1 for a perfect balance.
+// Global energy balance at one time (J). total = kinetic + internal + hourglass + bulk_viscous +
+// contact + rigid_wall (theory.md section 10.2: sliding energy with SLNTEN = 2, rigid-wall energy
+// with RWEN = 2); ratio = total / (initial total + external work), 1 for a perfect balance.
+// contact includes the friction dissipation, which is also given on its own (friction).
 struct Energies {
   double time = 0;
   double kinetic = 0, internal = 0, hourglass = 0, bulk_viscous = 0, external_work = 0;
-  double total() const { return kinetic + internal + hourglass + bulk_viscous; }
+  double contact = 0, friction = 0, rigid_wall = 0;
+  double total() const { return kinetic + internal + hourglass + bulk_viscous + contact + rigid_wall; }
 };
 
 struct State {
@@ -41,6 +44,9 @@ struct State {
   std::vector<BlockState> blocks;
   // Cumulative energies (internal/hourglass/bulk at t^n, after the last element pass).
   double internal_energy = 0, hourglass_energy = 0, bulk_viscous_energy = 0, external_work = 0;
+  double contact_energy = 0, friction_energy = 0, rigidwall_energy = 0;  // at t^n (after the last pass)
+  double dt_contact = 0;           // stable step of the stiffest contact spring (no TSSFAC); 0 = none
+  bool dt_contact_controls = false;  // dt_next_half is set by the contact, not by an element
   double initial_total_energy = 0;
   Energies last_balance;           // the balance at the start of the last step (t^n)
   std::vector<double> reaction;    // (num constrained sets, 3) constraint force resultant, N

@@ -1,0 +1,38 @@
+// Bucket sort for contact search (LS-DYNA Theory Manual, "Bucket sorting"): the bounding box of the
+// contact segments is split into cubic buckets of an edge at least the largest segment size; each
+// segment is listed in every bucket its box (expanded by a search margin) overlaps, so a node
+// needs to look in one bucket only. Buckets are a dense CSR array; a rebuild reuses the storage
+// (no allocation once the sizes have settled). Cost: O(segments + buckets), buckets capped at
+// ~2 per segment by enlarging the edge, so the search is linear in the surface size.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace plyimpact::contact {
+
+class BucketGrid {
+ public:
+  // boxes: (num_items, 6) lo_x lo_y lo_z hi_x hi_y hi_z, already expanded by the search margin.
+  // cell_hint: requested bucket edge (m), enlarged when the grid would have too many buckets.
+  void build(std::span<const double> boxes, double cell_hint);
+
+  // Items whose expanded box overlaps the bucket containing p; empty outside the grid.
+  std::span<const Index> candidates(const double* p) const;
+
+  double cell() const { return cell_; }
+  std::size_t num_buckets() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+
+ private:
+  long bucket_of(double x, int d) const;
+  double lo_[3] = {0, 0, 0};
+  double cell_ = 1;
+  long dims_[3] = {0, 0, 0};
+  std::vector<Index> offsets_;  // (num_buckets + 1)
+  std::vector<Index> items_;
+  std::vector<Index> fill_;     // scratch
+};
+
+}  // namespace plyimpact::contact

@@ -1,0 +1,489 @@
+#include "contact/penalty_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "element/hex8.hpp"
+
+namespace plyimpact::contact {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+PenaltyContact::PenaltyContact(const model::Model& model, const model::Contact& def, const std::vector<double>& x,
+                               double dt_initial)
+    : model_(model), def_(def) {
+  single_ = def.spec.type == config::ContactSpec::Type::SingleSurface;
+  dt_c_ = def.spec.DTSTIF > 0 ? def.spec.DTSTIF : dt_initial;
+  builder_a_ = SurfaceBuilder(model, def.a.blocks);
+  if (!single_) builder_b_ = SurfaceBuilder(model, def.b.blocks);
+  node_rigid_.assign(model.num_nodes(), 0);
+  for (const auto& body : model.rigid_bodies)
+    for (Index n : body.nodes) node_rigid_[n] = 1;
+  local_of_.assign(model.num_nodes(), -1);
+  build(x, nullptr);
+}
+
+void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive) {
+  const auto& spec = def_.spec;
+  // Keep per-node history across a rebuild (eroding contact): forces, friction, offsets.
+  // history key: 2 * node + side.
+  std::vector<std::pair<Index, std::array<double, 5>>> history;
+  for (std::size_t i = 0; i < sn_node_.size(); ++i)
+    history.push_back({2 * sn_node_[i] + sn_side_[i],
+                       {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i]}});
+  std::vector<std::pair<Index, std::array<double, 3>>> old_forces;
+  for (std::size_t u = 0; u < union_nodes_.size(); ++u)
+    old_forces.push_back({union_nodes_[u], {fc_prev_[3 * u], fc_prev_[3 * u + 1], fc_prev_[3 * u + 2]}});
+
+  seg_nodes_.clear();
+  seg_owner_.clear();
+  seg_side_.clear();
+  seg_k_.clear();
+  seg_mass_.clear();
+  seg_node_mass_.clear();
+  seg_depth_.clear();
+  auto add_segment = [&](const Index* q, const Index* owner, int side, double K, double volume, double elem_mass) {
+    double xq[12];
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 3; ++d) xq[3 * k + d] = x[3 * std::size_t(q[k]) + d];
+    const double area = quad_area(xq);
+    const double sf = spec.SLSFAC * (side == 0 ? spec.SFS : spec.SFM);
+    seg_nodes_.insert(seg_nodes_.end(), q, q + 4);
+    for (int k = 0; k < 8; ++k) seg_owner_.push_back(owner ? owner[k] : -1);
+    seg_side_.push_back(char(side));
+    seg_k_.push_back(K > 0 && volume > 0 ? sf * K * area * area / volume : kInf);
+    seg_mass_.push_back(elem_mass > 0 ? 0.5 * elem_mass : 0.0);
+    double m = 0;
+    for (int k = 0; k < 4; ++k) m += 0.25 * model_.mass[q[k]];
+    seg_node_mass_.push_back(m);
+    const double thickness = volume > 0 ? volume / area : 0.0;
+    seg_depth_.push_back(spec.PENMAX > 0 ? spec.PENMAX : 0.4 * std::max(thickness, std::sqrt(area)));
+  };
+  auto add_side = [&](const model::ContactSide& side, const SurfaceBuilder& builder, int id) {
+    for (const auto& f : builder.exterior(alive)) {
+      const auto& blk = model_.blocks[f.block];
+      const auto& mat = model_.materials[blk.material];
+      const Index* conn = &blk.conn[8 * std::size_t(f.element)];
+      Index q[4];
+      for (int k = 0; k < 4; ++k) q[k] = conn[kHexFaces[f.face][k]];
+      const double volume = blk.volume0[f.element];
+      add_segment(q, conn, id, mat.bulk_modulus, volume, mat.density * volume);
+    }
+    if (side.impactor) {
+      const std::size_t nq = model_.impactor_quads.size() / 4;
+      const double m = model_.impactor ? model_.impactor->mass / double(std::max<std::size_t>(nq, 1)) : 0.0;
+      for (std::size_t s = 0; s < nq; ++s) add_segment(&model_.impactor_quads[4 * s], nullptr, id, 0.0, 0.0, 2 * m);
+    }
+  };
+  add_side(def_.a, builder_a_, 0);
+  if (!single_) add_side(def_.b, builder_b_, 1);
+  const std::size_t S = seg_side_.size();
+  seg_sphere_.assign(4 * S, 0.0);
+
+  // Slave nodes: the segment nodes of each side (ENMASS 1 keeps eroded nodes as mass points).
+  std::vector<double> k_sum(model_.num_nodes() * 2, 0.0), segm_sum(model_.num_nodes() * 2, 0.0);
+  std::vector<int> k_count(model_.num_nodes() * 2, 0);
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t key = 2 * std::size_t(seg_nodes_[4 * s + k]) + seg_side_[s];
+      k_sum[key] += seg_k_[s];
+      segm_sum[key] += seg_mass_[s];
+      ++k_count[key];
+    }
+  sn_node_.clear();
+  sn_side_.clear();
+  sn_k_.clear();
+  sn_mass_.clear();
+  sn_seg_mass_.clear();
+  for (std::size_t n = 0; n < model_.num_nodes(); ++n)
+    for (int side = 0; side < 2; ++side) {
+      const std::size_t key = 2 * n + side;
+      if (k_count[key] == 0) continue;
+      sn_node_.push_back(Index(n));
+      sn_side_.push_back(char(side));
+      sn_k_.push_back(k_sum[key] / k_count[key]);
+      sn_mass_.push_back(model_.mass[n]);
+      sn_seg_mass_.push_back(segm_sum[key] / k_count[key]);
+    }
+  if (spec.ENMASS == 1)
+    for (std::size_t i = 0; i < history.size(); ++i) {
+      const Index n = history[i].first / 2;
+      if (k_count[2 * std::size_t(n)] == 0 && k_count[2 * std::size_t(n) + 1] == 0 && model_.mass[n] > 0) {
+        // Orphan node kept as a contact mass point (side unknown here: keep side A unless single).
+        sn_node_.push_back(n);
+        sn_side_.push_back(0);
+        sn_k_.push_back(history[i].second[4]);
+        sn_mass_.push_back(model_.mass[n]);
+        sn_seg_mass_.push_back(model_.mass[n]);
+      }
+    }
+  const std::size_t N = sn_node_.size();
+  {
+    std::vector<Index> slave_index(2 * model_.num_nodes(), -1);
+    for (std::size_t i = 0; i < N; ++i) slave_index[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
+    seg_slave_.resize(4 * S);
+    for (std::size_t s = 0; s < S; ++s)
+      for (int k = 0; k < 4; ++k) seg_slave_[4 * s + k] = slave_index[2 * std::size_t(seg_nodes_[4 * s + k]) + seg_side_[s]];
+  }
+  sn_normal_.assign(3 * N, 0.0);
+  sn_offset_.assign(N, 0.0);
+  sn_ft_.assign(3 * N, 0.0);
+  sn_segment_.assign(N, -1);
+  if (!history.empty()) {  // restore the per-node history (once per rebuild)
+    std::vector<Index> slave_of(2 * model_.num_nodes(), -1);
+    for (std::size_t i = 0; i < N; ++i) slave_of[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
+    for (const auto& [key, h] : history) {
+      Index i = slave_of[std::size_t(key)];
+      if (i < 0) i = slave_of[std::size_t(key - key % 2)];  // orphan kept as side A
+      if (i < 0) continue;
+      for (int d = 0; d < 3; ++d) sn_ft_[3 * std::size_t(i) + d] = h[d];
+      sn_offset_[i] = h[3];
+    }
+  }
+
+  // Union of all force-carrying nodes.
+  for (Index n : union_nodes_) local_of_[n] = -1;
+  union_nodes_.clear();
+  union_side_a_.clear();
+  auto add_union = [&](Index n, bool side_a) {
+    if (local_of_[n] < 0) {
+      local_of_[n] = Index(union_nodes_.size());
+      union_nodes_.push_back(n);
+      union_side_a_.push_back(0);
+    }
+    if (side_a) union_side_a_[local_of_[n]] = 1;
+  };
+  for (std::size_t i = 0; i < N; ++i) add_union(sn_node_[i], sn_side_[i] == 0 && !single_);
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k) add_union(seg_nodes_[4 * s + k], seg_side_[s] == 0 && !single_);
+  sn_local_.resize(N);
+  for (std::size_t i = 0; i < N; ++i) sn_local_[i] = local_of_[sn_node_[i]];
+  const std::size_t U = union_nodes_.size();
+  fc_.assign(3 * U, 0.0);
+  fc_prev_.assign(3 * U, 0.0);
+  x_sort_.assign(3 * U, 0.0);
+  for (const auto& [node, f] : old_forces)
+    if (local_of_[node] >= 0)
+      for (int d = 0; d < 3; ++d) fc_prev_[3 * std::size_t(local_of_[node]) + d] = f[d];
+
+  // Search parameters: bucket edge = largest segment extent.
+  cell_ = 0;
+  double depth_max = 0;
+  for (std::size_t s = 0; s < S; ++s) {
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) {
+        double d2 = 0;
+        for (int d = 0; d < 3; ++d) {
+          const double e = x[3 * std::size_t(seg_nodes_[4 * s + a]) + d] - x[3 * std::size_t(seg_nodes_[4 * s + b]) + d];
+          d2 += e * e;
+        }
+        cell_ = std::max(cell_, std::sqrt(d2));
+      }
+    depth_max = std::max(depth_max, seg_depth_[s]);
+  }
+  allowance_ = 0.25 * cell_;
+  margin_ = depth_max + 0.05 * cell_ + allowance_;
+  estimate_stiffness_range();
+  sort(x.data());
+}
+
+void PenaltyContact::estimate_stiffness_range() {
+  // Stiffness bounds and the stiffest spring's frequency omega^2 = k (1/m_s + 1/m_other) with
+  // rigid nodes counted as infinitely heavy (their body's mass is far larger than a node's).
+  const std::size_t S = seg_side_.size(), N = sn_node_.size();
+  double seg_k_max[2] = {0, 0}, seg_mass_max[2] = {0, 0}, m_min[2] = {kInf, kInf};
+  double k_fin_min = kInf;
+  for (std::size_t s = 0; s < S; ++s) {
+    const int side = seg_side_[s];
+    if (std::isfinite(seg_k_[s])) {
+      seg_k_max[side] = std::max(seg_k_max[side], seg_k_[s]);
+      k_fin_min = std::min(k_fin_min, seg_k_[s]);
+    }
+    seg_mass_max[side] = std::max(seg_mass_max[side], seg_mass_[s]);
+  }
+  for (std::size_t i = 0; i < N; ++i)
+    if (!node_rigid_[sn_node_[i]] && sn_mass_[i] > 0) m_min[int(sn_side_[i])] = std::min(m_min[int(sn_side_[i])], sn_mass_[i]);
+  k_min_ = kInf;
+  k_max_ = 0;
+  dt_stable_ = kInf;
+  const auto& spec = def_.spec;
+  for (std::size_t i = 0; i < N; ++i) {
+    const int other = single_ ? 0 : 1 - sn_side_[i];
+    double k_lo = 0, k_hi = 0;
+    const double k0_hi = std::isfinite(sn_k_[i]) ? sn_k_[i] : seg_k_max[other];
+    const double k0_lo = std::isfinite(sn_k_[i]) ? std::min(sn_k_[i], k_fin_min) : k_fin_min;
+    if (spec.SOFT == 0) {
+      k_lo = k0_lo;
+      k_hi = k0_hi;
+    } else if (spec.SOFT == 1) {
+      const double soft = spec.SOFSCL * 0.5 * sn_mass_[i] / (dt_c_ * dt_c_);
+      k_lo = std::max(k0_lo, 0.0);
+      k_hi = std::max(k0_hi, soft);
+      k_lo = std::max(k_lo == kInf ? 0.0 : k_lo, std::min(soft, k_hi));
+    } else {
+      const double sf = spec.SLSFAC * (sn_side_[i] == 0 ? spec.SFS : spec.SFM);
+      const double m1 = sn_seg_mass_[i], m2 = seg_mass_max[other];
+      k_hi = m1 + m2 > 0 ? 0.5 * sf * m1 * m2 / (m1 + m2) / (dt_c_ * dt_c_) : 0.0;
+      k_lo = k_hi;
+    }
+    if (!(k_hi > 0) || !std::isfinite(k_hi)) continue;
+    k_min_ = std::min(k_min_, k_lo > 0 && std::isfinite(k_lo) ? k_lo : k_hi);
+    k_max_ = std::max(k_max_, k_hi);
+    const double inv_m = (node_rigid_[sn_node_[i]] || !(sn_mass_[i] > 0) ? 0.0 : 1.0 / sn_mass_[i]) +
+                         (std::isfinite(m_min[other]) ? 1.0 / m_min[other] : 0.0);
+    if (inv_m > 0) dt_stable_ = std::min(dt_stable_, 2.0 / std::sqrt(k_hi * inv_m));
+  }
+  if (!std::isfinite(k_min_)) k_min_ = 0;
+}
+
+void PenaltyContact::sort(const double* x) {
+  const std::size_t S = seg_side_.size();
+  boxes_.resize(6 * S);
+  for (std::size_t s = 0; s < S; ++s) {
+    double* b = &boxes_[6 * s];
+    for (int d = 0; d < 3; ++d) {
+      b[d] = 1e300;
+      b[3 + d] = -1e300;
+    }
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 3; ++d) {
+        const double c = x[3 * std::size_t(seg_nodes_[4 * s + k]) + d];
+        b[d] = std::min(b[d], c - margin_);
+        b[3 + d] = std::max(b[3 + d], c + margin_);
+      }
+  }
+  grid_.build(boxes_, cell_ + 2 * margin_);
+  for (std::size_t u = 0; u < union_nodes_.size(); ++u)
+    for (int d = 0; d < 3; ++d) x_sort_[3 * u + d] = x[3 * std::size_t(union_nodes_[u]) + d];
+  cycles_since_sort_ = 0;
+  ++sorts_;
+}
+
+double PenaltyContact::stiffness(std::size_t i, std::size_t s) const {
+  const auto& spec = def_.spec;
+  if (spec.SOFT == 2) {
+    const double sf = spec.SLSFAC * (sn_side_[i] == 0 ? spec.SFS : spec.SFM);
+    const double m1 = sn_seg_mass_[i], m2 = seg_mass_[s];
+    return m1 + m2 > 0 ? 0.5 * sf * m1 * m2 / (m1 + m2) / (dt_c_ * dt_c_) : 0.0;
+  }
+  double k0 = std::min(sn_k_[i], seg_k_[s]);  // PENOPT 1
+  if (!std::isfinite(k0)) k0 = 0;
+  if (spec.SOFT == 0) return k0;
+  const double m = std::min(sn_mass_[i], seg_node_mass_[s]);
+  return std::max(k0, spec.SOFSCL * 0.5 * m / (dt_c_ * dt_c_));
+}
+
+long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& best, double new_contact_depth) const {
+  const long last = sn_segment_[i];
+  const Index node = sn_node_[i];
+  const double* p = &x[3 * std::size_t(node)];
+  long best_s = -1;
+  for (Index s : grid_.candidates(p)) {
+    if (!single_ && seg_side_[s] == sn_side_[i]) continue;
+    const Index* q = &seg_nodes_[4 * std::size_t(s)];
+    if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) continue;
+    if (single_) {
+      const Index* o = &seg_owner_[8 * std::size_t(s)];
+      bool own = false;
+      for (int k = 0; k < 8; ++k) own = own || o[k] == node;
+      if (own) continue;
+    }
+    const double* c = &seg_sphere_[4 * std::size_t(s)];
+    const double dx = p[0] - c[0], dy = p[1] - c[1], dz = p[2] - c[2];
+    const double reach = c[3] + seg_depth_[s];
+    if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
+    double xq[12];
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 3; ++d) xq[3 * k + d] = x[3 * std::size_t(q[k]) + d];
+    const Projection pr = project_to_quad(p, xq, def_.spec.MAXPAR);
+    if (!pr.inside) continue;
+    // Orientation: the node's own surface must face the segment (normals at more than ~107 deg),
+    // so a node at a corner is not pushed out through a side face it merely slid under.
+    const double* nn = &sn_normal_[3 * i];
+    if (dot3(nn, nn) > 0 && dot3(nn, pr.normal) > -0.3 * std::sqrt(dot3(nn, nn))) continue;
+    const double g = pr.gap - sn_offset_[i];
+    // Full release depth only on the segment the node was already in contact with.
+    if (!(g < 0) || g <= -(s == last ? seg_depth_[s] : std::min(seg_depth_[s], new_contact_depth + 0.02 * seg_depth_[s])))
+      continue;
+    // The nearest surface wins: the least penetrated segment.
+    if (best_s < 0 || g > best.gap - sn_offset_[i]) {
+      best = pr;
+      best_s = s;
+    }
+  }
+  return best_s;
+}
+
+void PenaltyContact::update_node_normals(const double* x) {
+  std::fill(sn_normal_.begin(), sn_normal_.end(), 0.0);
+  const std::size_t S = seg_side_.size();
+  for (std::size_t s = 0; s < S; ++s) {
+    const Index* q = &seg_nodes_[4 * s];
+    double d1[3], d2[3], n[3];
+    for (int d = 0; d < 3; ++d) {
+      d1[d] = x[3 * std::size_t(q[2]) + d] - x[3 * std::size_t(q[0]) + d];
+      d2[d] = x[3 * std::size_t(q[3]) + d] - x[3 * std::size_t(q[1]) + d];
+    }
+    cross3(d1, d2, n);  // twice the area times the mean normal
+    for (int k = 0; k < 4; ++k)
+      if (const Index i = seg_slave_[4 * s + k]; i >= 0)
+        for (int d = 0; d < 3; ++d) sn_normal_[3 * std::size_t(i) + d] += n[d];
+  }
+}
+
+InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<double>& x) {
+  InitialPenetrations r;
+  r.moved = def_.spec.initial_penetration == config::ContactSpec::InitialPenetration::Move;
+  const std::size_t S = seg_side_.size();
+  for (std::size_t s = 0; s < S; ++s) {  // bounding spheres at x
+    double* c = &seg_sphere_[4 * s];
+    c[0] = c[1] = c[2] = c[3] = 0;
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 3; ++d) c[d] += 0.25 * x[3 * std::size_t(seg_nodes_[4 * s + k]) + d];
+    for (int k = 0; k < 4; ++k) {
+      double r2 = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double e = x[3 * std::size_t(seg_nodes_[4 * s + k]) + d] - c[d];
+        r2 += e * e;
+      }
+      c[3] = std::max(c[3], std::sqrt(r2));
+    }
+  }
+  update_node_normals(x.data());
+  for (std::size_t i = 0; i < sn_node_.size(); ++i) {
+    Projection pr;
+    const long s = find_segment(i, x.data(), pr, std::numeric_limits<double>::infinity());
+    if (s < 0) continue;
+    const double g = pr.gap - sn_offset_[i];
+    ++r.count;
+    r.max_depth = std::max(r.max_depth, -g);
+    const Index node = sn_node_[i];
+    if (r.moved && !node_rigid_[node]) {
+      for (int d = 0; d < 3; ++d) x[3 * std::size_t(node) + d] -= g * pr.normal[d];
+    } else {
+      sn_offset_[i] += g;
+    }
+  }
+  return r;
+}
+
+void PenaltyContact::apply(const double* x, const double* v, double* f, double dt) {
+  const auto& spec = def_.spec;
+  const std::size_t S = seg_side_.size(), N = sn_node_.size(), U = union_nodes_.size();
+  // Re-sort at the interval or when a node has moved a quarter of the allowance since the last sort
+  // (node and segment together then stay within the allowance).
+  ++cycles_since_sort_;
+  bool resort = cycles_since_sort_ >= spec.BSORT;
+  if (!resort) {
+    const double lim2 = 0.25 * allowance_ * 0.25 * allowance_;
+    for (std::size_t u = 0; u < U && !resort; ++u) {
+      const double* p = &x[3 * std::size_t(union_nodes_[u])];
+      const double dx = p[0] - x_sort_[3 * u], dy = p[1] - x_sort_[3 * u + 1], dz = p[2] - x_sort_[3 * u + 2];
+      resort = dx * dx + dy * dy + dz * dz > lim2;
+    }
+  }
+  if (resort) sort(x);
+  for (std::size_t s = 0; s < S; ++s) {
+    double* c = &seg_sphere_[4 * s];
+    const Index* q = &seg_nodes_[4 * s];
+    for (int d = 0; d < 3; ++d)
+      c[d] = 0.25 * (x[3 * std::size_t(q[0]) + d] + x[3 * std::size_t(q[1]) + d] + x[3 * std::size_t(q[2]) + d] +
+                     x[3 * std::size_t(q[3]) + d]);
+    double r2 = 0;
+    for (int k = 0; k < 4; ++k) {
+      const double* p = &x[3 * std::size_t(q[k])];
+      r2 = std::max(r2, (p[0] - c[0]) * (p[0] - c[0]) + (p[1] - c[1]) * (p[1] - c[1]) + (p[2] - c[2]) * (p[2] - c[2]));
+    }
+    c[3] = std::sqrt(r2);
+  }
+  update_node_normals(x);
+  std::fill(fc_.begin(), fc_.end(), 0.0);
+  forces_ = ContactForces{};
+  const bool friction = spec.FS > 0 || spec.FD > 0;
+  double friction_work = 0;
+  double v_max2 = 0;  // fastest contact node: bounds the relative motion in one step
+  for (std::size_t u = 0; u < U; ++u) {
+    const double* vu = &v[3 * std::size_t(union_nodes_[u])];
+    v_max2 = std::max(v_max2, dot3(vu, vu));
+  }
+  const double v_max = std::sqrt(v_max2);
+  for (std::size_t i = 0; i < N; ++i) {
+    Projection pr;
+    const double* vi = &v[3 * std::size_t(sn_node_[i])];
+    const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max));
+    double* ft = &sn_ft_[3 * i];
+    sn_segment_[i] = s;
+    if (s < 0) {
+      ft[0] = ft[1] = ft[2] = 0;
+      continue;
+    }
+    const Index node = sn_node_[i];
+    const Index* q = &seg_nodes_[4 * std::size_t(s)];
+    const double* n = pr.normal;
+    const double g = pr.gap - sn_offset_[i];
+    const double k = stiffness(i, std::size_t(s));
+    double fn = -k * g;
+    double vrel[3];
+    for (int d = 0; d < 3; ++d) {
+      vrel[d] = v[3 * std::size_t(node) + d];
+      for (int a = 0; a < 4; ++a) vrel[d] -= pr.N[a] * v[3 * std::size_t(q[a]) + d];
+    }
+    const double vn = dot3(vrel, n);
+    if (spec.VDC > 0) {
+      const double ms = sn_mass_[i], mm = seg_node_mass_[s];
+      if (ms > 0 && mm > 0) {
+        const double omega = std::sqrt(k * (ms + mm) / (ms * mm));
+        fn -= spec.VDC / 100.0 * 2.0 * std::min(ms, mm) * omega * vn;
+      }
+      fn = std::max(fn, 0.0);
+    }
+    double F[3] = {fn * n[0], fn * n[1], fn * n[2]};
+    if (friction) {
+      double vt[3] = {vrel[0] - vn * n[0], vrel[1] - vn * n[1], vrel[2] - vn * n[2]};
+      const double speed = std::sqrt(dot3(vt, vt));
+      const double mu = spec.FD + (spec.FS - spec.FD) * std::exp(-spec.DC * speed);
+      const double ftn = dot3(ft, n);
+      double trial[3];
+      for (int d = 0; d < 3; ++d) trial[d] = ft[d] - ftn * n[d] - k * vt[d] * dt;
+      const double mag = std::sqrt(dot3(trial, trial)), limit = mu * fn;
+      const double scale = mag > limit && mag > 0 ? limit / mag : 1.0;
+      for (int d = 0; d < 3; ++d) {
+        ft[d] = scale * trial[d];
+        F[d] += ft[d];
+      }
+      friction_work -= dot3(ft, vt) * dt;
+      forces_.tangential += std::sqrt(dot3(ft, ft));
+    }
+    forces_.normal += fn;
+    ++forces_.active;
+    double* fs = &fc_[3 * std::size_t(sn_local_[i])];
+    for (int d = 0; d < 3; ++d) fs[d] += F[d];
+    for (int a = 0; a < 4; ++a) {
+      double* fm = &fc_[3 * std::size_t(local_of_[q[a]])];
+      for (int d = 0; d < 3; ++d) fm[d] -= pr.N[a] * F[d];
+    }
+  }
+  // Scatter, energy (trapezoid: the step moved the nodes by dt v) and side-A resultant.
+  double work = 0;
+  for (std::size_t u = 0; u < U; ++u) {
+    const std::size_t node = std::size_t(union_nodes_[u]);
+    for (int d = 0; d < 3; ++d) {
+      const double fu = fc_[3 * u + d];
+      f[3 * node + d] += fu;
+      work += 0.5 * (fc_prev_[3 * u + d] + fu) * v[3 * node + d] * dt;
+      if (union_side_a_[u]) forces_.resultant[d] += fu;
+    }
+  }
+  energy_ -= work;
+  friction_energy_ += friction_work;
+  fc_prev_.swap(fc_);
+  std::copy(fc_prev_.begin(), fc_prev_.end(), fc_.begin());  // fc_ keeps the last forces for output
+}
+
+void PenaltyContact::rebuild(const AliveMask& alive, const std::vector<double>& x) {
+  build(x, &alive);
+}
+
+}  // namespace plyimpact::contact

@@ -1,0 +1,130 @@
+// Penalty contact, node to segment (theory.md section 8): automatic (two-way) surface-to-surface
+// contact between two sets of parts, or single-surface contact of one set with itself; both with
+// the ERODING_ option (the surface is rebuilt from the exposed faces when elements are deleted).
+//   detection : bucket sort of the segments (contact/bucket_grid), re-sorted every BSORT cycles or
+//               when a contact node has moved a quarter of the search allowance; closest-point
+//               projection (contact/geometry) with MAXPAR; a node penetrates when its gap
+//               g = n . (x_s - x_c) - g_0 lies in (-depth, 0) (g_0: initial-penetration offset).
+//   stiffness : SOFT 0  k = min(k_node, k_seg), k_seg = SLSFAC SF K A^2 / V (PENOPT 1)
+//               SOFT 1  k = max(SOFT 0 value, SOFSCL 0.5 m* / dt_c^2), m* = min(node, segment mass)
+//               SOFT 2  k = 0.5 SLSFAC SF (m1 m2 / (m1 + m2)) / dt_c^2, m = segment masses
+//   force     : f_s = (k |g| + viscous) n + f_t on the node, -N_k f_s on the segment nodes, so
+//               linear momentum is conserved to round-off. Friction: elastic-slip return map with
+//               mu = FD + (FS - FD) exp(-DC |v_rel|); VDC: normal viscous damping, % of critical.
+//   energy    : contact energy = - work of the contact forces (trapezoid in time); the frictional
+//               part (work of the tangential forces against the slip) is reported separately.
+// Serial and allocation-free per cycle (buffers sized at construction or rebuild), so the result
+// does not depend on the thread count.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "contact/bucket_grid.hpp"
+#include "contact/geometry.hpp"
+#include "contact/surface.hpp"
+#include "model/model.hpp"
+
+namespace plyimpact::contact {
+
+struct InitialPenetrations {
+  std::size_t count = 0;
+  double max_depth = 0;    // m
+  bool moved = false;      // true: nodes moved onto the surface; false: kept as offset
+};
+
+// Per-contact output of the last pass.
+struct ContactForces {
+  Vec3 resultant{0, 0, 0};   // N, total contact force on side A (on the surface for single surface: 0)
+  double normal = 0;         // N, sum of the normal force magnitudes of all contact points
+  double tangential = 0;     // N, sum of the friction force magnitudes
+  std::size_t active = 0;    // number of penetrating nodes
+};
+
+class PenaltyContact {
+ public:
+  // dt_initial: the initial solution step (TSSFAC applied), Delta t_c of SOFT 1/2 unless DTSTIF.
+  PenaltyContact(const model::Model& model, const model::Contact& def, const std::vector<double>& x,
+                 double dt_initial);
+
+  // Detects initial penetrations at x and, as the scene says, moves the penetrating deformable
+  // nodes onto the surface or stores the penetration as a zero-force offset.
+  InitialPenetrations resolve_initial_penetrations(std::vector<double>& x);
+
+  // Adds the contact forces at x^{n+1} (velocities v^{n+1/2}) to f. dt: Delta t^{n+1/2}, the step
+  // that led to x (0 for the initial evaluation).
+  void apply(const double* x, const double* v, double* f, double dt);
+
+  // After element deletion: rebuild the surfaces from the active elements at x (eroding contact).
+  void rebuild(const AliveMask& alive, const std::vector<double>& x);
+
+  const std::string& name() const { return def_.spec.name; }
+  bool eroding() const { return def_.spec.eroding; }
+  int soft() const { return def_.spec.SOFT; }
+  double energy() const { return energy_; }                  // J, includes friction and damping work
+  double friction_energy() const { return friction_energy_; }  // J, dissipated by friction
+  const ContactForces& forces() const { return forces_; }
+  // Nodes that can carry a contact force and their last forces (num, 3) — for rigid-body output.
+  const std::vector<Index>& force_nodes() const { return union_nodes_; }
+  const std::vector<double>& node_forces() const { return fc_; }
+  std::size_t num_segments() const { return seg_side_.size(); }
+  std::size_t num_slave_nodes() const { return sn_node_.size(); }
+  double stiffness_min() const { return k_min_; }   // N/m over possible node-segment pairs
+  double stiffness_max() const { return k_max_; }
+  // Stable step of the stiffest node-segment spring, 2 / omega (no TSSFAC).
+  double stable_step() const { return dt_stable_; }
+  long sorts() const { return sorts_; }
+
+ private:
+  void build(const std::vector<double>& x, const AliveMask* alive);
+  void sort(const double* x);
+  double stiffness(std::size_t i, std::size_t s) const;
+  // Best penetrated segment of slave node i at x, or -1; fills the projection.
+  // new_contact_depth: deepest penetration accepted for a node that was not in contact at the last
+  // pass (it can only have crossed the surface by its relative motion in one step; a deeper
+  // "penetration" is a node beside an edge projecting onto a side face, not a real one).
+  long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth) const;
+  void estimate_stiffness_range();
+  void update_node_normals(const double* x);
+
+  const model::Model& model_;
+  model::Contact def_;
+  bool single_ = false;
+  double dt_c_ = 0;
+  SurfaceBuilder builder_a_, builder_b_;
+  std::vector<char> node_rigid_;   // (num_nodes) slaved to a rigid body
+  // Segments.
+  std::vector<Index> seg_nodes_;   // (S, 4)
+  std::vector<Index> seg_owner_;   // (S, 8) owning element's nodes (-1 for the impactor surface)
+  std::vector<char> seg_side_;     // 0 = A, 1 = B
+  std::vector<double> seg_k_;      // SOFT 0 stiffness incl. SLSFAC and SFS/SFM (inf: no element)
+  std::vector<double> seg_mass_;   // SOFT 2 segment mass (half the element's)
+  std::vector<double> seg_node_mass_;  // mean nodal mass of its nodes
+  std::vector<double> seg_depth_;  // release depth, m
+  std::vector<double> seg_sphere_; // (S, 4) centre and radius, refreshed every pass
+  // Slave nodes.
+  std::vector<Index> sn_node_;
+  std::vector<char> sn_side_;
+  std::vector<double> sn_k_, sn_mass_, sn_seg_mass_;
+  std::vector<double> sn_offset_;  // initial-penetration baseline gap (<= 0)
+  std::vector<double> sn_ft_;      // (N, 3) tangential (friction) force of the last pass
+  std::vector<double> sn_normal_;  // (N, 3) area-weighted outward normal of the node's own surface
+  std::vector<Index> seg_slave_;   // (S, 4) slave index of each segment node on the segment's side
+  std::vector<long> sn_segment_;   // segment the node was in contact with at the last pass, -1
+  // Nodes receiving forces (union of both sides), their forces and positions at the last sort.
+  std::vector<Index> union_nodes_;
+  std::vector<Index> local_of_;    // (num_nodes) -> index in union_nodes_, -1
+  std::vector<char> union_side_a_;
+  std::vector<double> fc_, fc_prev_, x_sort_;
+  std::vector<Index> sn_local_;    // slave node -> union index
+  BucketGrid grid_;
+  std::vector<double> boxes_;
+  double cell_ = 0, allowance_ = 0, margin_ = 0;
+  long cycles_since_sort_ = 0, sorts_ = 0;
+  double energy_ = 0, friction_energy_ = 0;
+  ContactForces forces_;
+  double k_min_ = 0, k_max_ = 0, dt_stable_ = std::numeric_limits<double>::infinity();
+};
+
+}  // namespace plyimpact::contact

@@ -1,0 +1,222 @@
+// Penalty contact between bodies (contact/penalty_contact), checked against conservation laws and
+// closed-form kinematics:
+//  - Head-on impact of two equal deformable steel blocks (automatic surface to surface, SOFT 0 and
+//    SOFT 1): the penalty forces on a node and on the segment nodes are equal and opposite (shape
+//    functions sum to one) and element forces sum to zero, so total momentum stays at its initial
+//    value (zero) to round-off: |sum m v| < 1e-12 of one block's momentum. Energy: KE + IE + HG +
+//    contact energy stays at the initial KE (energy ratio within 1 %, the trapezoid booking of the
+//    penalty work is second order in dt); after separation the contact energy has returned to near 0
+//    (the penalty springs are elastic).
+//  - Rigid (MAT_020) impactor on a deformable block: the momentum of body + block is conserved to
+//    round-off too, and the body's history (velocity, contact force) is consistent: m dv/dt = F.
+//  - Friction: a steel block sliding on a fixed rigid plate under gravity (FS = FD = 0.3) decelerates
+//    at mu g; measured from the centre-of-mass velocity over 20 ms: within 2 % (the penalty normal
+//    force oscillates about m g; its mean is m g).
+//  - Eroding contact: a box with its top middle element deleted by hand; a punch inside the slot
+//    moving down meets the newly exposed face at once (contact force when the punch reaches it), and
+//    without the deletion (no rebuild) nothing stops it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "support.hpp"
+
+namespace plyimpact {
+namespace {
+
+std::string two_blocks(int soft) {
+  return std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+         "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+         "sections:\n  s: {ELFORM: 2, Q1: 0, Q2: 0}\n"
+         "parts:\n  a: {material: steel, section: s}\n  b: {material: steel, section: s}\n"
+         "mesh:\n  merge_nodes: false\n  boxes:\n"
+         "    - {part: a, origin: [0, 0, 0], size: [0.004, 0.004, 0.004], elements: [2, 2, 2]}\n"
+         "    - {part: b, origin: [0.0005, 0.0005, 0.0042], size: [0.003, 0.003, 0.004], elements: [3, 3, 4]}\n"
+         "initial_velocity:\n  - {part: a, velocity: [0, 0, 5]}\n  - {part: b, velocity: [0, 0, -5]}\n"
+         "contacts:\n  - {name: hit, type: automatic_surface_to_surface, surfaces: [a, b], SOFT: " +
+         std::to_string(soft) + "}\n";
+}
+
+void momentum(const model::Model& m, const solver::Solver& s, double p[3]) {
+  p[0] = p[1] = p[2] = 0;
+  for (std::size_t i = 0; i < m.num_nodes(); ++i)
+    for (int d = 0; d < 3; ++d) p[d] += m.mass[i] * s.state().v[3 * i + d];
+}
+
+class HeadOn : public ::testing::TestWithParam<int> {};
+
+TEST_P(HeadOn, MomentumToRoundOffAndEnergyAccountedFor) {
+  const model::Model model = test::model_from_yaml(two_blocks(GetParam()), "head_on.yaml");
+  solver::Solver solver(model);
+  double ma = 0;
+  for (Index n : model.blocks[0].conn) (void)n;
+  for (std::size_t i = 0; i < model.num_nodes(); ++i) ma += model.mass[i];
+  const double p_scale = 0.5 * ma * 5.0;  // one block's momentum (the blocks differ slightly in mass)
+  double p0[3];
+  momentum(model, solver, p0);
+  double max_dp = 0, max_ratio_err = 0, max_contact = 0, peak_force = 0;
+  const double t_end = 40e-6 + 3e-6;  // approach 40 us (0.2 mm at 10 m/s closing) then ~3 us contact
+  while (solver.state().time < 3 * t_end) {
+    solver.step();
+    double p[3];
+    momentum(model, solver, p);
+    for (int d = 0; d < 3; ++d) max_dp = std::max(max_dp, std::abs(p[d] - p0[d]));
+    max_ratio_err = std::max(max_ratio_err, std::abs(solver.energy_ratio() - 1));
+    max_contact = std::max(max_contact, solver.balance().contact);
+    peak_force = std::max(peak_force, solver.contacts()[0].forces().normal);
+  }
+  const auto& e = solver.balance();
+  std::cout << "head-on SOFT " << GetParam() << ": max |dp| / p " << max_dp / p_scale << ", max |ratio - 1| "
+            << max_ratio_err << ", peak contact energy " << max_contact << " J of KE0 " << e.total()
+            << ", final contact energy " << e.contact << " J, peak normal force " << peak_force << " N, KE now "
+            << e.kinetic << "\n";
+  EXPECT_GT(peak_force, 0.0);
+  EXPECT_LT(max_dp / p_scale, 1e-12);
+  EXPECT_LT(max_ratio_err, 0.01);
+  EXPECT_LT(std::abs(e.contact), 0.05 * max_contact + 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(Soft, HeadOn, ::testing::Values(0, 1));
+
+TEST(RigidImpactor, MomentumOfBodyAndBlockConserved) {
+  const std::string yaml = std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+                           "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+                           "  tup: {card: MAT_020, RO: 7850, E: 210e9, PR: 0.3}\n"
+                           "sections:\n  s: {ELFORM: 2}\n"
+                           "parts:\n  block: {material: steel, section: s}\n  tup: {material: tup, section: s}\n"
+                           "mesh:\n  merge_nodes: false\n  boxes:\n"
+                           "    - {part: block, origin: [0, 0, 0], size: [0.006, 0.006, 0.003], elements: [6, 6, 3]}\n"
+                           "    - {part: tup, origin: [0.002, 0.002, 0.0031], size: [0.002, 0.002, 0.002], elements: [2, 2, 2]}\n"
+                           "initial_velocity:\n  - {part: tup, velocity: [0, 0, -5]}\n"
+                           "contacts:\n  - {name: impact, type: automatic_surface_to_surface, surfaces: [tup, block], SOFT: 1}\n";
+  const model::Model model = test::model_from_yaml(yaml, "rigid_impactor.yaml");
+  ASSERT_EQ(model.rigid_bodies.size(), 1u);
+  solver::Solver solver(model);
+  const double m_body = model.rigid_bodies[0].mass;
+  auto total_momentum = [&] {
+    double pz = m_body * solver.rigid_bodies()[0].v[2];
+    for (std::size_t i = 0; i < model.num_nodes(); ++i)
+      if (std::find(model.rigid_bodies[0].nodes.begin(), model.rigid_bodies[0].nodes.end(), Index(i)) ==
+          model.rigid_bodies[0].nodes.end())
+        pz += model.mass[i] * solver.state().v[3 * i + 2];
+    return pz;
+  };
+  const double p0 = total_momentum();
+  double max_dp = 0, peak = 0;
+  while (solver.state().time < 40e-6) {
+    solver.step();
+    max_dp = std::max(max_dp, std::abs(total_momentum() - p0));
+    peak = std::max(peak, solver.rigid_bodies()[0].contact_force[2]);
+  }
+  std::cout << "rigid impactor: max |dp| / p0 " << max_dp / std::abs(p0) << ", peak contact force on the body "
+            << peak << " N, body velocity now " << solver.rigid_bodies()[0].v[2] << " m/s, energy ratio "
+            << solver.energy_ratio() << "\n";
+  EXPECT_GT(peak, 0.0);
+  EXPECT_LT(max_dp / std::abs(p0), 1e-12);
+  EXPECT_GT(solver.rigid_bodies()[0].v[2], -5.0);  // the block slowed the body down
+  EXPECT_NEAR(solver.energy_ratio(), 1.0, 0.02);
+}
+
+TEST(Friction, BlockSlidingOnRigidPlateDeceleratesAtMuG) {
+  const double mu = 0.3, g = 9.81, v0 = 1.0, T = 0.02;
+  const std::string yaml = std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+                           "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+                           "  plate: {card: MAT_020, RO: 7850, E: 210e9, PR: 0.3, CMO: 1, CON1: 7, CON2: 7}\n"
+                           "sections:\n  s: {ELFORM: 2}\n"
+                           "parts:\n  block: {material: steel, section: s}\n  plate: {material: plate, section: s}\n"
+                           "mesh:\n  merge_nodes: false\n  boxes:\n"
+                           "    - {part: plate, origin: [-0.01, -0.01, -0.002], size: [0.1, 0.03, 0.002], elements: [20, 3, 1]}\n"
+                           "    - {part: block, origin: [0, 0, 0], size: [0.01, 0.01, 0.01], elements: [2, 2, 2]}\n"
+                           "initial_velocity:\n  - {part: block, velocity: [1, 0, 0]}\n"
+                           "gravity: [0, 0, -9.81]\n"
+                           "contacts:\n  - {name: slide, type: automatic_surface_to_surface, surfaces: [block, plate], "
+                           "SOFT: 1, FS: 0.3, FD: 0.3}\n";
+  const model::Model model = test::model_from_yaml(yaml, "friction.yaml");
+  solver::Solver solver(model);
+  auto vx = [&] {
+    double p = 0, m = 0;
+    for (Index n : std::vector<Index>(model.blocks[0].conn.begin(), model.blocks[0].conn.end())) (void)n;
+    for (std::size_t i = 0; i < model.num_nodes(); ++i)
+      if (model.blocks[0].conn.end() != std::find(model.blocks[0].conn.begin(), model.blocks[0].conn.end(), Index(i))) {
+        p += model.mass[i] * solver.state().v[3 * i];
+        m += model.mass[i];
+      }
+    return p / m;
+  };
+  const double t_start = 2e-3;  // let the block settle on its penalty springs first
+  test::run_until(solver, t_start);
+  const double v_start = vx();
+  test::run_until(solver, t_start + T);
+  const double decel = (v_start - vx()) / T;
+  std::cout << "friction: deceleration " << decel << " m/s^2 (mu g " << mu * g << "), friction energy "
+            << solver.balance().friction << " J, energy ratio " << solver.energy_ratio() << "\n";
+  EXPECT_NEAR(decel, mu * g, 0.02 * mu * g);
+  EXPECT_GT(solver.balance().friction, 0.0);
+  (void)v0;
+}
+
+TEST(Friction, BlockSlidingOnRigidWallDeceleratesAtMuG) {
+  const double mu = 0.3, g = 9.81, T = 0.02;
+  const std::string yaml = std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+                           "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+                           "sections:\n  s: {ELFORM: 2}\n"
+                           "parts:\n  block: {material: steel, section: s}\n"
+                           "mesh:\n  boxes:\n    - {part: block, size: [0.01, 0.01, 0.01], elements: [2, 2, 2]}\n"
+                           "initial_velocity:\n  - {part: block, velocity: [1, 0, 0]}\n"
+                           "gravity: [0, 0, -9.81]\n"
+                           "rigid_walls:\n  - {name: floor, point: [0, 0, 0], normal: [0, 0, 1], friction: 0.3}\n";
+  const model::Model model = test::model_from_yaml(yaml, "friction_wall.yaml");
+  solver::Solver solver(model);
+  auto vx = [&] {
+    double p = 0, m = 0;
+    for (std::size_t i = 0; i < model.num_nodes(); ++i) p += model.mass[i] * solver.state().v[3 * i], m += model.mass[i];
+    return p / m;
+  };
+  const double v_start = vx();
+  test::run_until(solver, T);
+  const double decel = (v_start - vx()) / T;
+  std::cout << "wall friction: deceleration " << decel << " m/s^2 (mu g " << mu * g << "), wall energy "
+            << solver.balance().rigid_wall << " J, energy ratio " << solver.energy_ratio() << "\n";
+  EXPECT_NEAR(decel, mu * g, 0.01 * mu * g);
+}
+
+std::string slot_scene(bool eroding) {
+  return std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+         "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+         "sections:\n  s: {ELFORM: 2}\n"
+         "parts:\n  base: {material: steel, section: s}\n  punch: {material: steel, section: s}\n"
+         "mesh:\n  merge_nodes: false\n  boxes:\n"
+         "    - {part: base, origin: [0, 0, 0], size: [0.003, 0.003, 0.002], elements: [3, 3, 2]}\n"
+         "    - {part: punch, origin: [0.0011, 0.0011, 0.0012], size: [0.0008, 0.0008, 0.0007], elements: [2, 2, 2]}\n"
+         "initial_velocity:\n  - {part: punch, velocity: [0, 0, -10]}\n"
+         "contacts:\n  - {name: slot, type: " +
+         (eroding ? "eroding" : "automatic") + "_surface_to_surface, surfaces: [punch, base], SOFT: 1}\n";
+}
+
+TEST(ErodingContact, ExposedFacesTakePartAtOnce) {
+  for (bool erode : {true, false}) {
+    const model::Model model = test::model_from_yaml(slot_scene(erode), "slot.yaml");
+    solver::Solver solver(model);
+    ASSERT_EQ(solver.initial_penetrations()[0].count, 0u);
+    // Element ids: base first, x fastest: the top layer is 10..18; its middle is 14.
+    solver.delete_elements({14});
+    double first_contact = -1;
+    const double t_reach = 0.0002 / 10.0;  // punch bottom (z = 1.2 mm) reaches the slot floor (1 mm)
+    while (solver.state().time < 1.5 * t_reach) {
+      solver.step();
+      if (first_contact < 0 && solver.contacts()[0].forces().active > 0) first_contact = solver.state().time;
+    }
+    std::cout << (erode ? "eroding" : "non-eroding") << " contact: first contact at " << first_contact
+              << " s (punch reaches the exposed face at " << t_reach << " s), segments "
+              << solver.contacts()[0].num_segments() << "\n";
+    if (erode) {
+      EXPECT_NEAR(first_contact, t_reach, 0.05 * t_reach);
+    } else {
+      EXPECT_LT(first_contact, 0.0);  // the surface was not rebuilt: the exposed face is unknown
+    }
+  }
+}
+
+}  // namespace
+}  // namespace plyimpact
