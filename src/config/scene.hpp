@@ -126,6 +126,7 @@ struct ControlSpec {
   double termination_time = 0;  // s (required)
   double tssfac = 0.9;          // *CONTROL_TIMESTEP TSSFAC
   double dt_min_ratio = 1e-3;   // stop if dt < dt_min_ratio * dt0
+  double energy_ratio_limit = 1.5;  // stop if the energy ratio exceeds it (energy is being created); 0 = off
   double hourglass_warn_ratio = 0.1;  // warn when E_hg > ratio * E_int
   long max_cycles = 0;          // 0 = no limit
   int threads = 0;              // 0 = OpenMP default

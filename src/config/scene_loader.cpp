@@ -33,12 +33,15 @@ std::string fmt(double v) { return msg() << v; }
 
 ControlSpec read_control(const Reader& r) {
   r.require_map("a mapping with termination_time and optional tssfac, dt_min_ratio, ...");
-  r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "hourglass_warn_ratio", "max_cycles", "threads"});
+  r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "energy_ratio_limit", "hourglass_warn_ratio", "max_cycles",
+                "threads"});
   ControlSpec c;
   c.termination_time = r.quantity("termination_time", u::time, Limits::positive("termination time"));
   c.tssfac = r.quantity_or("tssfac", u::dimensionless, c.tssfac, Limits::interval(0, true, 1, false, "tssfac"));
   c.dt_min_ratio =
       r.quantity_or("dt_min_ratio", u::dimensionless, c.dt_min_ratio, Limits::interval(0, true, 1, true, "dt_min_ratio"));
+  c.energy_ratio_limit = r.quantity_or("energy_ratio_limit", u::dimensionless, c.energy_ratio_limit,
+                                       Limits::at_least(0, "energy_ratio_limit"));
   c.hourglass_warn_ratio = r.quantity_or("hourglass_warn_ratio", u::dimensionless, c.hourglass_warn_ratio,
                                          Limits::positive("hourglass_warn_ratio"));
   c.max_cycles = r.integer_or("max_cycles", c.max_cycles, Limits::non_negative("max_cycles"));

@@ -264,6 +264,15 @@ void Solver::step() {
     throw RunError(msg() << "non-finite kinetic energy at cycle " << s.cycle << ", time " << s.time
                          << " s: a nodal velocity became NaN or infinite (unstable run; check the time step, "
                             "hourglass coefficient and boundary conditions)");
+  // Energy creation is the signature of a numerical instability (it grows geometrically once it
+  // starts). The first cycles are skipped: with the start-up half step their ratio is noise.
+  const double limit = model_.control.energy_ratio_limit;
+  if (limit > 0 && s.cycle >= 3 && energy_ratio() > limit)
+    throw RunError(msg() << "energy ratio " << energy_ratio() << " exceeds " << limit << " at cycle " << s.cycle
+                         << ", time " << s.time << " s: the run is creating energy, i.e. it is numerically "
+                         << "unstable; the step is controlled by element " << s.dt_element << " (part '"
+                         << part_of_element(s.dt_element) << "'). Lower control.tssfac (a free corner or a lone "
+                         << "element can exceed the Courant limit at 0.9), the hourglass QM or the contact stiffness");
 
   s.time += dt_half;
   element_pass(dt_half);
@@ -348,7 +357,8 @@ void Solver::check_after_pass(double dt_used) {
 double Solver::energy_ratio() const {
   const Energies& e = state_.last_balance;
   const double reference = state_.initial_total_energy + e.external_work;
-  if (reference == 0.0) return e.total() == 0.0 ? 1.0 : std::numeric_limits<double>::infinity();
+  // No initial energy and no work done: the ratio is undefined (what remains is round-off), report 1.
+  if (!(reference > 0.0)) return 1.0;
   return e.total() / reference;
 }
 
