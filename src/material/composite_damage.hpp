@@ -1,0 +1,104 @@
+// *MAT_054 / *MAT_055 (enhanced composite damage) at one integration point of a solid element.
+// Stress and strain are in MATERIAL axes (aa, bb, cc, ab, bc, ca; engineering shear strain), the
+// update is incremental (hypoelastic) in the corotated material frame: the element kernel rotates
+// the strain increment into the current material axes and the stress back. Units SI.
+// Every choice where the manual is ambiguous is listed at the top of composite_damage.cpp.
+#pragma once
+
+#include "config/mat054_spec.hpp"
+#include "material/composite_damage_criteria.hpp"
+#include "material/elastic.hpp"
+
+namespace plyimpact::material {
+
+// History of one integration point: kCompositeDamageHistory doubles, set by composite_damage_init.
+namespace composite_history {
+// Mode flags, as LS-DYNA's e_f, e_c, e_m, e_d: 1 intact, 0 failed (permanent).
+inline constexpr int kFibreTension = 0;
+inline constexpr int kFibreCompression = 1;
+inline constexpr int kMatrixTension = 2;
+inline constexpr int kMatrixCompression = 3;
+// Current fibre strengths (Pa): XT, or FBRT*XT after e_d = 0; XC, or YCFAC*YC after e_d = 0.
+inline constexpr int kXT = 4;
+inline constexpr int kXC = 5;
+// 6 values: total strain in material axes (sum of the increments, engineering shear), for DFAIL*,
+// EFS and the transverse shear damage.
+inline constexpr int kStrain = 6;
+// d in [0, TSMD] on the bc and ca stresses (EPSF/EPSR); never decreases.
+inline constexpr int kTransverseShearDamage = 12;
+// 1 once the context reported the element on a crashfront.
+inline constexpr int kCrashfront = 13;
+// CompositeDamageCause of the erosion; 0 while the point is alive.
+inline constexpr int kCause = 14;
+// 4 values: last e^2 of fibre tension, fibre compression, matrix tension, matrix compression
+// (-1 when the stress sign does not load the mode; frozen at the failure value once failed).
+inline constexpr int kCriteria = 15;
+// 5 values: cycles since the limit on aa tension, aa compression, bb tension, bb compression and
+// ab shear started (0 = not started; 1 in the failure cycle), for the NCYRED ramp.
+inline constexpr int kRampCycles = 19;
+// 5 values: stress magnitude (Pa) at which each of those limits started.
+inline constexpr int kRampStart = 24;
+inline constexpr int kCount = 29;
+}  // namespace composite_history
+inline constexpr int kCompositeDamageHistory = composite_history::kCount;
+
+// Why a point eroded (the element is deleted when its only point erodes).
+enum class CompositeDamageCause : int {
+  None = 0,
+  FibreTension = 1,     // DFAILT = 0: fibre-tension criterion met
+  DFAILT = 2,           // eps_aa >= DFAILT
+  DFAILC = 3,           // eps_aa <= DFAILC
+  DFAILM = 4,           // |eps_bb| >= DFAILM
+  DFAILS = 5,           // |gamma_ab| / 2 >= DFAILS (tensorial shear)
+  EFS = 6,              // effective strain >= EFS
+  TFAIL = 7,            // element time step below TFAIL (absolute or ratio)
+  TransverseShear = 8,  // EPSR < 0 and transverse shear damage reached TSMD
+};
+const char* composite_damage_cause_name(CompositeDamageCause c);
+
+// Constants prepared once per material (no strings, trivially copyable).
+struct CompositeDamageParams {
+  Stiffness6 C{};             // undamaged stiffness, material axes (orthotropic_stiffness)
+  double RO = 0;
+  double wave_modulus = 0;    // max rho c^2 of the undamaged stiffness (max_wave_modulus)
+  double GAB = 0, GBC = 0, GCA = 0;
+  CompositeStrengths strength;  // as entered
+  int CRIT = 54;
+  double BETA = 0, ALPH = 0;
+  double FBRT = 0, YCFAC = 2, SOFT = 1, SOFTG = 1;
+  double SLIMT1 = 0, SLIMC1 = 0, SLIMT2 = 0, SLIMC2 = 0, SLIMS = 0;
+  int NCYRED = 1;             // >= 1 (blank/0 -> 1: the stress drops in the failure cycle)
+  double DFAILT = 0, DFAILC = 0, DFAILM = 0, DFAILS = 0, EFS = 0;
+  double TFAIL = 0;
+  double EPSF = 0, EPSR = 0, TSMD = 0.9;  // TSMD blank -> 0.90 (KW text)
+};
+
+// Throws InputError (file:line:col: key: ...) when the constants are not positive definite or the
+// card holds a field unsupported_field() names.
+CompositeDamageParams make_composite_damage_params(const config::MatCompositeDamage& m,
+                                                   const config::SourceLocation& where);
+
+// Undamaged state: flags 1, strengths as entered, zero strain, criteria -1.
+void composite_damage_init(const CompositeDamageParams& p, double* history);
+
+struct CompositeDamageContext {
+  double element_dt = 0;  // current stable step of the element (s); <= 0: TFAIL not checked
+  double initial_dt = 0;  // its step at t = 0 (s), for TFAIL > 0.1
+  bool crashfront = false;  // the element shares a node with a deleted element
+};
+
+struct CompositeDamageResult {
+  bool erode = false;  // the point has failed: its stress is zero from now on
+  int cause = 0;       // CompositeDamageCause
+};
+
+// One cycle: dstrain = strain increment (material axes, engineering shear), stress = stress in
+// material axes at the start of the cycle, overwritten with the new stress. No allocation.
+CompositeDamageResult composite_damage_update(const CompositeDamageParams& p, const double dstrain[6],
+                                              double stress[6], double* history,
+                                              const CompositeDamageContext& ctx);
+
+// rho c^2 for the stable time step: undamaged stiffness (damage only lowers it).
+inline double composite_damage_wave_modulus(const CompositeDamageParams& p) { return p.wave_modulus; }
+
+}  // namespace plyimpact::material
