@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-#include "config/scene.hpp"
+#include "config/material_axes.hpp"
 
 namespace plyimpact::config {
 

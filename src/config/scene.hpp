@@ -10,6 +10,8 @@
 #include <variant>
 #include <vector>
 
+#include "config/mat054_spec.hpp"
+#include "config/material_axes.hpp"
 #include "core/types.hpp"
 
 namespace plyimpact::config {
@@ -27,15 +29,6 @@ struct MatElastic {
   double RO = 0, E = 0, PR = 0;
 };
 
-// Material axes as on LS-DYNA orthotropic cards (AOPT 0, 2, 3) plus the element/part angle BETA.
-struct MaterialAxes {
-  int AOPT = 0;                  // 0: element nodes 1-2-4; 2: global vectors A, D; 3: V x mid-surface normal
-  Vec3 A{1, 0, 0};               // AOPT 2
-  Vec3 D{0, 1, 0};               // AOPT 2
-  Vec3 V{1, 0, 0};               // AOPT 3
-  double BETA = 0;               // rad, rotation of a and b about c (MANGLE / BETA on the card)
-};
-
 // *MAT_002 (*MAT_ORTHOTROPIC_ELASTIC). PRBA = nu_ba (the minor ratio for a = fibre), as on the card.
 struct MatOrthotropicElastic {
   double RO = 0, EA = 0, EB = 0, EC = 0, PRBA = 0, PRCA = 0, PRCB = 0, GAB = 0, GBC = 0, GCA = 0;
@@ -50,10 +43,24 @@ struct MatRigid {
   int CMO = 0, CON1 = 0, CON2 = 0;
 };
 
+// *MAT_003 (*MAT_PLASTIC_KINEMATIC): bilinear elasto-plastic, BETA 0 kinematic .. 1 isotropic,
+// Cowper-Symonds SRC/SRP, failure (erosion) at effective plastic strain FS (0 = none).
+struct MatPlasticKinematic {
+  double RO = 0, E = 0, PR = 0, SIGY = 0, ETAN = 0, BETA = 0, SRC = 0, SRP = 0, FS = 0;
+};
+
+// *MAT_024 (*MAT_PIECEWISE_LINEAR_PLASTICITY): isotropic hardening from the curve LCSS (effective
+// plastic strain, yield stress), given inline; without it SIGY and ETAN; rate factor C/P; FAIL.
+struct MatPiecewiseLinear {
+  double RO = 0, E = 0, PR = 0, SIGY = 0, ETAN = 0, FAIL = 0, C = 0, P = 0;
+  std::vector<double> LCSS_strain, LCSS_stress;
+};
+
 struct MaterialSpec {
   std::string name;
   std::string card;  // "MAT_001", "MAT_002" or "MAT_020" (LS-DYNA keyword number)
-  std::variant<MatElastic, MatOrthotropicElastic, MatRigid> params;
+  std::variant<MatElastic, MatOrthotropicElastic, MatRigid, MatPlasticKinematic, MatPiecewiseLinear, MatCompositeDamage>
+      params;
   SourceLocation where;
 };
 
@@ -126,6 +133,7 @@ struct ControlSpec {
   double termination_time = 0;  // s (required)
   double tssfac = 0.9;          // *CONTROL_TIMESTEP TSSFAC
   double dt_min_ratio = 1e-3;   // stop if dt < dt_min_ratio * dt0
+  double erode_tsmin = 0;       // s: erode elements whose step falls below it (ERODE=1 with TSMIN); 0 = off
   double energy_ratio_limit = 1.5;  // stop if the energy ratio exceeds it (energy is being created); 0 = off
   double hourglass_warn_ratio = 0.1;  // warn when E_hg > ratio * E_int
   long max_cycles = 0;          // 0 = no limit

@@ -1,6 +1,8 @@
 // Scene loader: one small function per YAML section on top of detail::Reader. See scene_loader.hpp.
 #include "config/scene_loader.hpp"
 
+#include "config/mat054_reader.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -33,8 +35,8 @@ std::string fmt(double v) { return msg() << v; }
 
 ControlSpec read_control(const Reader& r) {
   r.require_map("a mapping with termination_time and optional tssfac, dt_min_ratio, ...");
-  r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "energy_ratio_limit", "hourglass_warn_ratio", "max_cycles",
-                "threads"});
+  r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "energy_ratio_limit", "erode_tsmin",
+                "hourglass_warn_ratio", "max_cycles", "threads"});
   ControlSpec c;
   c.termination_time = r.quantity("termination_time", u::time, Limits::positive("termination time"));
   c.tssfac = r.quantity_or("tssfac", u::dimensionless, c.tssfac, Limits::interval(0, true, 1, false, "tssfac"));
@@ -42,6 +44,7 @@ ControlSpec read_control(const Reader& r) {
       r.quantity_or("dt_min_ratio", u::dimensionless, c.dt_min_ratio, Limits::interval(0, true, 1, true, "dt_min_ratio"));
   c.energy_ratio_limit = r.quantity_or("energy_ratio_limit", u::dimensionless, c.energy_ratio_limit,
                                        Limits::at_least(0, "energy_ratio_limit"));
+  c.erode_tsmin = r.quantity_or("erode_tsmin", u::time, 0.0, Limits::non_negative("erode_tsmin"));
   c.hourglass_warn_ratio = r.quantity_or("hourglass_warn_ratio", u::dimensionless, c.hourglass_warn_ratio,
                                          Limits::positive("hourglass_warn_ratio"));
   c.max_cycles = r.integer_or("max_cycles", c.max_cycles, Limits::non_negative("max_cycles"));
@@ -61,7 +64,9 @@ OutputSpec read_output(const Reader& r) {
 // ---------------------------------------------------------------- materials
 
 std::string read_card(const Reader& r) {
-  const std::string allowed = "MAT_001 (ELASTIC), MAT_002 (ORTHOTROPIC_ELASTIC) or MAT_020 (RIGID)";
+  const std::string allowed =
+      "MAT_001 (ELASTIC), MAT_002 (ORTHOTROPIC_ELASTIC), MAT_003 (PLASTIC_KINEMATIC), MAT_020 (RIGID), MAT_024 "
+      "(PIECEWISE_LINEAR_PLASTICITY), MAT_054 / MAT_055 (ENHANCED_COMPOSITE_DAMAGE)";
   const Reader c = r.at("card", allowed);
   c.require_scalar(allowed);
   std::string s = c.node().Scalar();
@@ -70,6 +75,10 @@ std::string read_card(const Reader& r) {
   if (s == "MAT_001" || s == "MAT_ELASTIC" || s == "ELASTIC") return "MAT_001";
   if (s == "MAT_002" || s == "MAT_ORTHOTROPIC_ELASTIC" || s == "ORTHOTROPIC_ELASTIC") return "MAT_002";
   if (s == "MAT_020" || s == "MAT_RIGID" || s == "RIGID") return "MAT_020";
+  if (s == "MAT_003" || s == "MAT_PLASTIC_KINEMATIC" || s == "PLASTIC_KINEMATIC") return "MAT_003";
+  if (s == "MAT_054" || s == "MAT_ENHANCED_COMPOSITE_DAMAGE" || s == "ENHANCED_COMPOSITE_DAMAGE") return "MAT_054";
+  if (s == "MAT_055") return "MAT_055";
+  if (s == "MAT_024" || s == "MAT_PIECEWISE_LINEAR_PLASTICITY" || s == "PIECEWISE_LINEAR_PLASTICITY") return "MAT_024";
   c.fail("unknown material card", allowed);
 }
 
@@ -94,6 +103,56 @@ MatRigid read_rigid(const Reader& r) {
   if (m.CMO == 0 && (m.CON1 != 0 || m.CON2 != 0))
     r.at(m.CON1 != 0 ? "CON1" : "CON2", "")
         .fail("CON1/CON2 act only with CMO: 1 (global constraints)", "CMO: 1 together with CON1/CON2");
+  return m;
+}
+
+MatPlasticKinematic read_plastic_kinematic(const Reader& r) {
+  r.allow_keys({"card", "RO", "E", "PR", "SIGY", "ETAN", "BETA", "SRC", "SRP", "FS"});
+  MatPlasticKinematic m;
+  m.RO = r.quantity("RO", u::density, Limits::positive("density"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus"));
+  m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
+  m.SIGY = r.quantity("SIGY", u::stress, Limits::positive("yield stress"));
+  m.ETAN = r.quantity_or("ETAN", u::stress, 0.0, Limits::interval(0, false, m.E, true, "tangent modulus (below E)"));
+  m.BETA = r.quantity_or("BETA", u::dimensionless, 0.0, Limits::interval(0, false, 1, false, "BETA"));
+  m.SRC = r.quantity_or("SRC", u::frequency, 0.0, Limits::non_negative("SRC"));
+  m.SRP = r.quantity_or("SRP", u::dimensionless, 0.0, Limits::non_negative("SRP"));
+  if (m.SRC > 0 && !(m.SRP > 0)) r.at("SRC", "").fail("SRC needs a positive SRP (Cowper-Symonds exponent)", "SRP > 0");
+  m.FS = r.quantity_or("FS", u::dimensionless, 0.0, Limits::non_negative("failure strain"));
+  return m;
+}
+
+MatPiecewiseLinear read_piecewise_linear(const Reader& r) {
+  r.allow_keys({"card", "RO", "E", "PR", "SIGY", "ETAN", "FAIL", "C", "P", "LCSS"});
+  MatPiecewiseLinear m;
+  m.RO = r.quantity("RO", u::density, Limits::positive("density"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus"));
+  m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
+  m.ETAN = r.quantity_or("ETAN", u::stress, 0.0, Limits::interval(0, false, m.E, true, "tangent modulus (below E)"));
+  m.FAIL = r.quantity_or("FAIL", u::dimensionless, 0.0, Limits::non_negative("failure strain"));
+  m.C = r.quantity_or("C", u::frequency, 0.0, Limits::non_negative("C"));
+  m.P = r.quantity_or("P", u::dimensionless, 0.0, Limits::non_negative("P"));
+  if (m.C > 0 && !(m.P > 0)) r.at("C", "").fail("C needs a positive P (Cowper-Symonds exponent)", "P > 0");
+  const char* curve_text = "a list of [effective plastic strain, yield stress] pairs starting at strain 0";
+  if (const auto c = r.find("LCSS")) {
+    c->require_list(curve_text, true);
+    for (const Reader& pt : c->items()) {
+      pt.require_list(curve_text, true);
+      const auto xy = pt.items();
+      if (xy.size() != 2) pt.fail("expected a [strain, stress] pair", curve_text);
+      const double e = xy[0].as_quantity(u::dimensionless, Limits::non_negative("plastic strain"));
+      const double sy = xy[1].as_quantity(u::stress, Limits::positive("yield stress"));
+      if (m.LCSS_strain.empty() ? e != 0.0 : e <= m.LCSS_strain.back())
+        xy[0].fail("plastic strains must start at 0 and increase", curve_text);
+      if (!m.LCSS_stress.empty() && sy < m.LCSS_stress.back())
+        xy[1].fail("yield stresses must not decrease (no softening in MAT_024 here)", "non-decreasing stresses");
+      m.LCSS_strain.push_back(e);
+      m.LCSS_stress.push_back(sy);
+    }
+    m.SIGY = m.LCSS_stress.front();
+  } else {
+    m.SIGY = r.quantity("SIGY", u::stress, Limits::positive("yield stress (or give the curve LCSS)"));
+  }
   return m;
 }
 
@@ -166,6 +225,12 @@ std::vector<MaterialSpec> read_materials(const Reader& r) {
       spec.params = read_elastic(m);
     else if (spec.card == "MAT_020")
       spec.params = read_rigid(m);
+    else if (spec.card == "MAT_003")
+      spec.params = read_plastic_kinematic(m);
+    else if (spec.card == "MAT_024")
+      spec.params = read_piecewise_linear(m);
+    else if (spec.card == "MAT_054" || spec.card == "MAT_055")
+      spec.params = detail::read_mat054(m);
     else
       spec.params = read_orthotropic(m);
     out.push_back(std::move(spec));

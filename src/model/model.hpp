@@ -11,7 +11,9 @@
 
 #include "config/scene.hpp"
 #include "core/types.hpp"
+#include "material/composite_damage.hpp"
 #include "material/elastic.hpp"
+#include "material/plasticity.hpp"
 #include "mesh/mesh.hpp"
 
 namespace plyimpact::model {
@@ -20,6 +22,8 @@ enum class MaterialKind {
   IsotropicElastic,    // *MAT_001: hypoelastic, objective Hughes-Winget stress update
   OrthotropicElastic,  // *MAT_002: total Lagrangian, S = C : E, sigma = F S F^T / J
   Rigid,               // *MAT_020: no stress; the part moves as one rigid body (solver/rigid_body)
+  Plastic,             // *MAT_003 / *MAT_024: hypoelastic J2 plasticity (material/plasticity)
+  CompositeDamage,     // *MAT_054 / *MAT_055: incremental, in current material axes (material/composite_damage)
 };
 
 struct Material {
@@ -33,7 +37,16 @@ struct Material {
   double bulk_modulus = 0;
   material::IsotropicConstants iso;    // MAT_001
   material::Stiffness6 c_material{};   // MAT_002, in material axes
-  config::MaterialAxes axes;           // MAT_002
+  config::MaterialAxes axes;           // MAT_002, MAT_054
+  material::PlasticityParams plastic;  // MAT_003, MAT_024
+  material::CompositeDamageParams composite;  // MAT_054/055
+  // History values per integration point (plastic strain, back stress; damage flags, ...).
+  int history_size() const {
+    return kind == MaterialKind::Plastic           ? material::kPlasticityHistory
+           : kind == MaterialKind::CompositeDamage ? material::kCompositeDamageHistory
+                                                   : 0;
+  }
+  bool has_axes() const { return kind == MaterialKind::OrthotropicElastic || kind == MaterialKind::CompositeDamage; }
 };
 
 // One material orientation: axes and the stiffness rotated to global (reference) axes.

@@ -32,6 +32,33 @@ Material make_material(const config::MaterialSpec& spec) {
     m.iso = material::isotropic_constants(config::MatElastic{rig->RO, rig->E, rig->PR});
     m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
     m.bulk_modulus = rig->E / (3 * (1 - 2 * rig->PR));
+  } else if (const auto* pk = std::get_if<config::MatPlasticKinematic>(&spec.params)) {
+    m.kind = MaterialKind::Plastic;
+    m.density = pk->RO;
+    m.plastic = material::plastic_kinematic(pk->E, pk->PR, pk->SIGY, pk->ETAN, pk->BETA, pk->SRC, pk->SRP, pk->FS);
+    m.iso = material::isotropic_constants(config::MatElastic{pk->RO, pk->E, pk->PR});
+    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;  // elastic moduli for the step (conservative)
+    m.bulk_modulus = pk->E / (3 * (1 - 2 * pk->PR));
+  } else if (const auto* pl = std::get_if<config::MatPiecewiseLinear>(&spec.params)) {
+    m.kind = MaterialKind::Plastic;
+    m.density = pl->RO;
+    m.plastic = material::piecewise_linear(pl->E, pl->PR, pl->SIGY, pl->ETAN, pl->C, pl->P, pl->FAIL, pl->LCSS_strain,
+                                           pl->LCSS_stress);
+    m.iso = material::isotropic_constants(config::MatElastic{pl->RO, pl->E, pl->PR});
+    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
+    m.bulk_modulus = pl->E / (3 * (1 - 2 * pl->PR));
+  } else if (const auto* cd = std::get_if<config::MatCompositeDamage>(&spec.params)) {
+    m.kind = MaterialKind::CompositeDamage;
+    m.density = cd->RO;
+    m.composite = material::make_composite_damage_params(*cd, spec.where);
+    m.c_material = m.composite.C;
+    m.wave_modulus = m.composite.wave_modulus;  // undamaged stiffness, as LS-DYNA (theory.md 1.2)
+    const double s_sum = 1 / cd->EA + 1 / cd->EB + 1 / cd->EC - 2 * (cd->PRBA / cd->EB + cd->PRCA / cd->EC + cd->PRCB / cd->EC);
+    m.bulk_modulus = s_sum > 0 ? 1 / s_sum : m.wave_modulus / 3;
+    m.axes = cd->axes;
+    if (m.axes.AOPT != 3 && m.axes.BETA != 0.0)
+      throw InputError(at(spec.where) << "MANGLE acts only with AOPT 3 (as in LS-DYNA); found AOPT " << m.axes.AOPT
+                                      << "; give a ply angle with parts.<name>.beta instead");
   } else {
     const auto& ortho = std::get<config::MatOrthotropicElastic>(spec.params);
     m.kind = MaterialKind::OrthotropicElastic;
@@ -166,7 +193,11 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
     const Material& mat = model.materials[block.material];
     const auto& part_spec = scene.parts[block.part];
     block.volume0.resize(block.size());
-    if (mat.kind == MaterialKind::OrthotropicElastic) block.orientation.resize(block.size());
+    if (mat.has_axes()) block.orientation.resize(block.size());
+    if (mat.history_size() > 0 && block.elform != 1)
+      throw InputError(at(part_spec.where) << "part '" << part.name << "': " << mat.card
+                                           << " is implemented for ELFORM 1 only so far; found ELFORM "
+                                           << block.elform);
     for (std::size_t e = 0; e < block.size(); ++e) {
       double x[3][8];
       gather_reference(model.X, &block.conn[8 * e], x);
@@ -188,7 +219,7 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
         block.reference_jacobian_inverse.insert(block.reference_jacobian_inverse.end(), Jinv, Jinv + 9);
       }
       for (int k = 0; k < 8; ++k) model.mass[block.conn[8 * e + k]] += mat.density * volume / 8.0;
-      if (mat.kind == MaterialKind::OrthotropicElastic) {
+      if (mat.has_axes()) {
         const double beta = part_spec.beta + (mat.axes.AOPT == 3 ? mat.axes.BETA : 0.0);
         const Mat3 axes = material::material_axes(mat.axes, beta, x);
         const auto key = std::make_pair(block.material, axes);

@@ -77,7 +77,13 @@ std::vector<Subsystem> subsystems(const Model& model) {
                         " duplicated node pairs; tiebreak is not implemented yet, so these interfaces are bonded "
                         "(the plies share the pair's lower node) and cannot delaminate"});
   }
-  list.push_back({"erosion", false, "left out: no material with a failure criterion"});
+  std::string eroding;
+  for (const auto& m : model.materials)
+    if (m.kind == MaterialKind::CompositeDamage || (m.kind == MaterialKind::Plastic && m.plastic.failure_strain > 0))
+      eroding += (eroding.empty() ? "" : ", ") + m.name + " (" + m.card + ")";
+  if (model.control.erode_tsmin > 0) eroding += std::string(eroding.empty() ? "" : ", ") + "time step below erode_tsmin";
+  list.push_back({"erosion", !eroding.empty(),
+                  eroding.empty() ? "left out: no material with a failure criterion" : "elements can erode: " + eroding});
   return list;
 }
 

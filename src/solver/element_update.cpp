@@ -9,6 +9,8 @@
 #include <cmath>
 
 #include "element/hex8.hpp"
+#include "material/composite_damage.hpp"
+#include "material/plasticity.hpp"
 
 namespace plyimpact::solver {
 
@@ -214,6 +216,7 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
   const double rho0 = mat.density, c = mat.wave_speed, rho_c2 = mat.wave_modulus;
   const double lambda = mat.iso.lambda, mu = mat.iso.mu;
   const double qm = blk.qm, q1 = blk.q1, q2 = blk.q2;
+  const double erode_tsmin = model.control.erode_tsmin;
 
   for (Index e0 = begin; e0 < end; e0 += kLanes) {
     const int n = int(std::min<Index>(kLanes, end - e0));
@@ -330,7 +333,7 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     // Incremental rotation (Cayley form of Hughes-Winget), for the hypoelastic stress and the
     // stiffness hourglass forces.
     alignas(64) double R[9][kLanes];
-    if constexpr (!kTotalLagrangian || kStiffness) {
+    if constexpr (!kTotalLagrangian || kStiffness) {  // every incremental material and IHQ 4/5
       PLYIMPACT_LANES {
         const double h = 0.5 * dt;
         const double w1 = h * Wsk[7][l], w2 = h * Wsk[2][l], w3 = h * Wsk[3][l];
@@ -340,8 +343,27 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
         R[6][l] = cc * (-w2 + w3 * w1), R[7][l] = cc * (w1 + w3 * w2), R[8][l] = 1 + cc * (w3 * w3 - ww);
       }
     }
+    // Stable step from the largest face area (faces as in hex8_max_face_area); before the stress
+    // update because the damage material's TFAIL compares it with the initial step.
+    alignas(64) double dte[kLanes];
+    PLYIMPACT_LANES {
+      constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+      double max_area2 = 0;
+      for (const auto& fc : kFaces) {
+        const double d1x = xe[0][fc[2]][l] - xe[0][fc[0]][l], d1y = xe[1][fc[2]][l] - xe[1][fc[0]][l],
+                     d1z = xe[2][fc[2]][l] - xe[2][fc[0]][l];
+        const double d2x = xe[0][fc[3]][l] - xe[0][fc[1]][l], d2y = xe[1][fc[3]][l] - xe[1][fc[1]][l],
+                     d2z = xe[2][fc[3]][l] - xe[2][fc[1]][l];
+        const double cx = d1y * d2z - d1z * d2y, cy = d1z * d2x - d1x * d2z, cz = d1x * d2y - d1y * d2x;
+        max_area2 = std::max(max_area2, cx * cx + cy * cy + cz * cz);
+      }
+      dte[l] = element_time_step(V[l], 0.5 * std::sqrt(max_area2), c, trD[l], q1, q2);
+    }
     // Stress update.
     alignas(64) double s[6][kLanes], s_old[6][kLanes];
+    int erode_cause[kLanes] = {};  // > 0: the material failed (ErosionCause)
+    alignas(64) double Qnew[9][kLanes];  // MAT_054: rotated material axes
+    (void)Qnew;
     for (int l = 0; l < kLanes; ++l)
       for (int i = 0; i < 6; ++i) s_old[i][l] = st.stress[6 * std::size_t(elem[l]) + i];
     if constexpr (kTotalLagrangian) {
@@ -364,6 +386,62 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
           for (int i = 0; i < 36; ++i) Cv[i][l] = Cl[i];
         }
         PLYIMPACT_LANES total_lagrangian_lane(Jx, Ji, l, [&](int i) { return Cv[i][l]; }, s);
+      }
+    } else if constexpr (M == MaterialKind::Plastic) {
+      // J2 plasticity point by point (radial return with its own rotation of stress and back stress).
+      for (int l = 0; l < kLanes; ++l) {
+        for (int i = 0; i < 6; ++i) s[i][l] = 0;
+        if (l >= n || !ok[l]) continue;
+        double Rl[9], Dl[6], sl[6];
+        for (int i = 0; i < 9; ++i) Rl[i] = R[i][l];
+        for (int i = 0; i < 6; ++i) Dl[i] = D[i][l], sl[i] = s_old[i][l];
+        const auto res = material::plasticity_update(mat.plastic, Rl, Dl, dt, sl,
+                                                     &st.history[std::size_t(elem[l]) * material::kPlasticityHistory]);
+        for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
+        if (res.failed) erode_cause[l] = int(ErosionCause::PlasticStrain);
+      }
+    } else if constexpr (M == MaterialKind::CompositeDamage) {
+      // Incremental update in the current material axes Q (rows a, b, c), which rotate with the
+      // element: Q_new = Q_old R^T. The stress in material axes is Q_old sigma Q_old^T; the strain
+      // increment is rotated into the new axes (engineering shear for the material routine).
+      for (int l = 0; l < kLanes; ++l) {
+        for (int i = 0; i < 6; ++i) s[i][l] = 0;
+        if (l >= n || !ok[l]) continue;
+        const Index e = elem[l];
+        const double* Qo = &st.axes[9 * std::size_t(e)];
+        double Qn[9];
+        for (int a = 0; a < 3; ++a)
+          for (int j = 0; j < 3; ++j) Qn[3 * a + j] = Qo[3 * a] * R[3 * j][l] + Qo[3 * a + 1] * R[3 * j + 1][l] + Qo[3 * a + 2] * R[3 * j + 2][l];
+        auto to_axes = [](const double* Q, const double t[6], double out[6]) {
+          const double T[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
+          double QT[9];
+          for (int a = 0; a < 3; ++a)
+            for (int j = 0; j < 3; ++j) QT[3 * a + j] = Q[3 * a] * T[j] + Q[3 * a + 1] * T[3 + j] + Q[3 * a + 2] * T[6 + j];
+          auto qtq = [&](int a, int b) { return QT[3 * a] * Q[3 * b] + QT[3 * a + 1] * Q[3 * b + 1] + QT[3 * a + 2] * Q[3 * b + 2]; };
+          out[0] = qtq(0, 0), out[1] = qtq(1, 1), out[2] = qtq(2, 2), out[3] = qtq(0, 1), out[4] = qtq(1, 2), out[5] = qtq(2, 0);
+        };
+        double so[6], sm[6], de[6], dm[6];
+        for (int i = 0; i < 6; ++i) so[i] = s_old[i][l], de[i] = D[i][l] * dt;
+        to_axes(Qo, so, sm);
+        to_axes(Qn, de, dm);
+        for (int i = 3; i < 6; ++i) dm[i] *= 2;  // engineering shear
+        material::CompositeDamageContext ctx;
+        ctx.element_dt = dt > 0 ? dte[l] : 0.0;
+        ctx.initial_dt = st.initial_dt[e];
+        const auto res = material::composite_damage_update(
+            mat.composite, dm, sm, &st.history[std::size_t(e) * material::kCompositeDamageHistory], ctx);
+        // Back to global axes: sigma = Q^T sm Q.
+        const double Sm[9] = {sm[0], sm[3], sm[5], sm[3], sm[1], sm[4], sm[5], sm[4], sm[2]};
+        for (int i = 0; i < 3; ++i)
+          for (int j = i; j < 3; ++j) {
+            double sum = 0;
+            for (int a = 0; a < 3; ++a)
+              for (int b = 0; b < 3; ++b) sum += Qn[3 * a + i] * Sm[3 * a + b] * Qn[3 * b + j];
+            constexpr int kV[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+            s[kV[i][j]][l] = sum;
+          }
+        for (int i = 0; i < 9; ++i) Qnew[i][l] = Qn[i];
+        if (res.erode) erode_cause[l] = int(ErosionCause::CompositeBase) + res.cause;
       }
     } else {
       PLYIMPACT_LANES {
@@ -489,24 +567,11 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
         dHG[l] = e;
       }
     }
-    alignas(64) double dte[kLanes];
     PLYIMPACT_LANES {
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 8; ++k)
           fe[i][k][l] -= Qh[i][0][l] * gamma[0][k][l] + Qh[i][1][l] * gamma[1][k][l] +
                          Qh[i][2][l] * gamma[2][k][l] + Qh[i][3][l] * gamma[3][k][l];
-      // Stable step from the largest face area (faces as in hex8_max_face_area).
-      constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-      double max_area2 = 0;
-      for (const auto& fc : kFaces) {
-        const double d1x = xe[0][fc[2]][l] - xe[0][fc[0]][l], d1y = xe[1][fc[2]][l] - xe[1][fc[0]][l],
-                     d1z = xe[2][fc[2]][l] - xe[2][fc[0]][l];
-        const double d2x = xe[0][fc[3]][l] - xe[0][fc[1]][l], d2y = xe[1][fc[3]][l] - xe[1][fc[1]][l],
-                     d2z = xe[2][fc[3]][l] - xe[2][fc[1]][l];
-        const double cx = d1y * d2z - d1z * d2y, cy = d1z * d2x - d1x * d2z, cz = d1x * d2y - d1y * d2x;
-        max_area2 = std::max(max_area2, cx * cx + cy * cy + cz * cz);
-      }
-      dte[l] = element_time_step(V[l], 0.5 * std::sqrt(max_area2), c, trD[l], q1, q2);
     }
     // Per element: checks, stores and the scatter (in element order: deterministic).
     for (int l = 0; l < n; ++l) {
@@ -520,6 +585,22 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
         record_bad(r, blk.element_id[e], V[l], true);
         continue;
       }
+      if (dt == 0 && !st.initial_dt.empty()) st.initial_dt[e] = dte[l];
+      if (erode_tsmin > 0 && dt > 0 && dte[l] < erode_tsmin) erode_cause[l] = int(ErosionCause::TimeStep);
+      if (erode_cause[l] > 0) {
+        // Eroded: no stress and no force from now on; the energy it holds stays in the totals and
+        // is reported as eroded. Its mass stays on the nodes.
+        for (int i = 0; i < 6; ++i) st.stress[6 * std::size_t(e) + i] = 0;
+        st.internal_energy[e] += dIE[l];
+        st.hourglass_energy[e] += dHG[l];
+        r.internal_energy += dIE[l];
+        r.hourglass_energy += dHG[l];
+        r.eroded.emplace_back(blk.element_id[e], erode_cause[l]);
+        r.eroded_energy += st.internal_energy[e] + st.hourglass_energy[e];
+        continue;
+      }
+      if constexpr (M == MaterialKind::CompositeDamage)
+        for (int i = 0; i < 9; ++i) st.axes[9 * std::size_t(e) + i] = Qnew[i][l];
       st.volume[e] = V[l];
       for (int i = 0; i < 6; ++i) st.stress[6 * std::size_t(e) + i] = s[i][l];
       for (int i = 0; i < 3; ++i)
@@ -662,15 +743,33 @@ void dispatch_material(const model::Model& model, const model::ElementBlock& blk
 
 }  // namespace
 
+const char* erosion_cause_name(int cause) {
+  if (cause == int(ErosionCause::PlasticStrain)) return "plastic_strain";
+  if (cause == int(ErosionCause::TimeStep)) return "time_step";
+  if (cause > int(ErosionCause::CompositeBase))
+    return material::composite_damage_cause_name(
+        material::CompositeDamageCause(cause - int(ErosionCause::CompositeBase)));
+  return "unknown";
+}
+
 void update_elements(const model::Model& model, const model::ElementBlock& block, BlockState& state, Index begin,
                      Index end, const double* x, const double* v, double* f, double dt, ChunkResult& result) {
   // Accumulate in a local copy and write once: results of neighbouring chunks share cache lines and
   // are written by different threads.
   ChunkResult local;
-  if (model.materials[block.material].kind == MaterialKind::OrthotropicElastic)
-    dispatch_material<MaterialKind::OrthotropicElastic>(model, block, state, begin, end, x, v, f, dt, local);
-  else
-    dispatch_material<MaterialKind::IsotropicElastic>(model, block, state, begin, end, x, v, f, dt, local);
+  switch (model.materials[block.material].kind) {
+    case MaterialKind::OrthotropicElastic:
+      dispatch_material<MaterialKind::OrthotropicElastic>(model, block, state, begin, end, x, v, f, dt, local);
+      break;
+    case MaterialKind::Plastic:
+      dispatch_material<MaterialKind::Plastic>(model, block, state, begin, end, x, v, f, dt, local);
+      break;
+    case MaterialKind::CompositeDamage:
+      dispatch_material<MaterialKind::CompositeDamage>(model, block, state, begin, end, x, v, f, dt, local);
+      break;
+    default:
+      dispatch_material<MaterialKind::IsotropicElastic>(model, block, state, begin, end, x, v, f, dt, local);
+  }
   result = local;
 }
 

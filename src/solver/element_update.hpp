@@ -6,6 +6,8 @@
 #pragma once
 
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include "model/model.hpp"
 #include "solver/state.hpp"
@@ -21,7 +23,19 @@ struct ChunkResult {
   Index bad_element = -1;         // first element with a non-positive volume or non-finite result
   double bad_volume = 0;
   bool bad_is_nan = false;
+  // Elements whose material failed in this pass (to be deleted by the solver), in element order,
+  // with their erosion cause (ErosionCause), and the internal + hourglass energy they held.
+  std::vector<std::pair<Index, int>> eroded;
+  double eroded_energy = 0;
 };
+
+// Why an element was eroded (history.csv and summary.json count them per part and cause).
+enum class ErosionCause : int {
+  PlasticStrain = 1,  // MAT_003 FS / MAT_024 FAIL
+  TimeStep = 2,       // control.erode_tsmin: the element step fell below the limit
+  CompositeBase = 10, // MAT_054: 10 + material::CompositeDamageCause
+};
+const char* erosion_cause_name(int cause);
 
 // dt: Delta t^{n+1/2} (0 for the initial evaluation, which changes no stress).
 void update_elements(const model::Model& model, const model::ElementBlock& block, BlockState& state, Index begin,

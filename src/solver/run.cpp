@@ -26,6 +26,16 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// Erosion columns only when something can erode (a material with failure, or erode_tsmin).
+bool can_erode(const model::Model& model) {
+  if (model.control.erode_tsmin > 0) return true;
+  for (const auto& m : model.materials)
+    if (m.kind == model::MaterialKind::CompositeDamage ||
+        (m.kind == model::MaterialKind::Plastic && m.plastic.failure_strain > 0))
+      return true;
+  return false;
+}
+
 std::vector<std::string> history_columns(const model::Model& model) {
   std::vector<std::string> cols = {"time",         "dt",    "kinetic_energy", "internal_energy",
                                    "hourglass_energy", "bulk_viscous_energy", "external_work",
@@ -49,6 +59,10 @@ std::vector<std::string> history_columns(const model::Model& model) {
     for (const char* q : {"_x", "_y", "_z", "_vx", "_vy", "_vz", "_ax", "_ay", "_az", "_contact_fx", "_contact_fy",
                           "_contact_fz"})
       cols.push_back("rigid_" + b.name + q);
+  if (can_erode(model)) {
+    cols.push_back("eroded_elements");
+    cols.push_back("eroded_energy");
+  }
   return cols;
 }
 
@@ -73,6 +87,7 @@ void add_history_row(const Solver& solver, output::HistoryTable& table) {
   for (const auto& b : solver.rigid_bodies())
     row.insert(row.end(), {b.x[0], b.x[1], b.x[2], b.v[0], b.v[1], b.v[2], b.a[0], b.a[1], b.a[2], b.contact_force[0],
                            b.contact_force[1], b.contact_force[2]});
+  if (can_erode(solver.model())) row.insert(row.end(), {double(s.eroded_elements), s.eroded_energy});
   table.add_row(row);
 }
 
@@ -102,7 +117,9 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   output::HistoryTable history(history_columns(model));
   double solver_seconds = 0;
   long solver_cycles = 0;
-  double max_hourglass_ratio = 0;
+  // Hourglass check as in LS-DYNA practice: hourglass energy against the PEAK internal energy (a
+  // running ratio is meaningless early on, when the internal energy is still tiny).
+  double max_hourglass_ratio = 0, peak_internal = 0;
 
   auto write_frame = [&](const Solver& solver) {
     char file[64];
@@ -159,6 +176,21 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
     output::Json warnings = output::Json::array();
     for (const auto& w : report.warnings) warnings.push_back(w);
     j["warnings"] = warnings;
+    if (solver && can_erode(model)) {
+      output::Json erosion = output::Json::object();
+      erosion["eroded_elements"] = solver->state().eroded_elements;
+      erosion["eroded_energy"] = solver->state().eroded_energy;
+      output::Json by_part = output::Json::array();
+      for (const auto& c : solver->state().erosion) {
+        output::Json entry = output::Json::object();
+        entry["part"] = model.parts[c.part].name;
+        entry["cause"] = erosion_cause_name(c.cause);
+        entry["count"] = c.count;
+        by_part.push_back(entry);
+      }
+      erosion["by_part_and_cause"] = by_part;
+      j["erosion"] = erosion;
+    }
     j["files"] = output::Json::object();
     j["files"]["pvd"] = report.pvd.filename().string();
     j["files"]["history"] = report.history.filename().string();
@@ -185,7 +217,8 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
         add_history_row(*solver, history);
         next_history += history_interval * std::max(1.0, std::floor((t - next_history) / history_interval) + 1);
         const Energies& e = solver->balance();
-        if (e.internal > 0) max_hourglass_ratio = std::max(max_hourglass_ratio, e.hourglass / e.internal);
+        peak_internal = std::max(peak_internal, e.internal);
+        if (peak_internal > 0) max_hourglass_ratio = std::max(max_hourglass_ratio, e.hourglass / peak_internal);
       }
       const bool last = t >= t_end * (1 - 1e-12);
       if (t >= next_frame * (1 - 1e-12) || last) {
@@ -226,8 +259,8 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   report.ns_per_element_cycle = element_cycles > 0 ? 1e9 * solver_seconds / element_cycles : 0.0;
   if (max_hourglass_ratio > model.control.hourglass_warn_ratio) {
     char w[200];
-    std::snprintf(w, sizeof w, "hourglass energy reached %.1f%% of the internal energy (limit %.1f%%): refine the mesh, "
-                  "use ELFORM 2 or a stiffness hourglass form", 100 * max_hourglass_ratio,
+    std::snprintf(w, sizeof w, "hourglass energy reached %.1f%% of the peak internal energy (limit %.1f%%): refine the mesh "
+                  "(more elements through the thickness) or use ELFORM 2", 100 * max_hourglass_ratio,
                   100 * model.control.hourglass_warn_ratio);
     report.warnings.push_back(w);
   }

@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include "core/error.hpp"
+#include "material/composite_damage.hpp"
 
 namespace plyimpact::solver {
 
@@ -29,6 +30,8 @@ void merge(ChunkResult& total, const ChunkResult& r) {
     total.bad_volume = r.bad_volume;
     total.bad_is_nan = r.bad_is_nan;
   }
+  total.eroded.insert(total.eroded.end(), r.eroded.begin(), r.eroded.end());
+  total.eroded_energy += r.eroded_energy;
 }
 }
 
@@ -60,6 +63,19 @@ Solver::Solver(const model::Model& model) : model_(model) {
     st.internal_energy.assign(blk.size(), 0.0);
     st.hourglass_energy.assign(blk.size(), 0.0);
     st.volume = blk.volume0;
+    const model::Material& mat = model.materials[blk.material];
+    const int h = mat.history_size();
+    if (h > 0) st.history.assign(std::size_t(h) * blk.size() * blk.points(), 0.0);
+    if (mat.kind == model::MaterialKind::CompositeDamage) {
+      for (std::size_t q = 0; q < blk.size() * blk.points(); ++q)
+        material::composite_damage_init(mat.composite, &st.history[q * std::size_t(h)]);
+      st.axes.resize(9 * blk.size());
+      for (std::size_t e = 0; e < blk.size(); ++e) {
+        const auto& a = model.orientations[blk.orientation[e]].axes;
+        std::copy(a.begin(), a.end(), st.axes.begin() + 9 * e);
+      }
+      st.initial_dt.assign(blk.size(), 0.0);
+    }
   }
   dof_constraint_.assign(3 * n, -1);
   for (std::size_t c = 0; c < model.constraints.size(); ++c) dof_constraint_[model.constraints[c].dof] = int(c);
@@ -330,6 +346,14 @@ void Solver::check_after_pass(double dt_used) {
       total.bad_is_nan = r.bad_is_nan;
     }
   }
+  std::vector<Index> eroded;
+  for (const auto& r : chunk_results_) {  // chunk order: deterministic
+    for (const auto& [id, cause] : r.eroded) {
+      eroded.push_back(id);
+      count_erosion(id, cause);
+    }
+    s.eroded_energy += r.eroded_energy;
+  }
   s.internal_energy += total.internal_energy;
   s.hourglass_energy += total.hourglass_energy;
   s.bulk_viscous_energy += total.bad_element >= 0 ? 0.0 : total.bulk_viscous_energy;
@@ -343,7 +367,15 @@ void Solver::check_after_pass(double dt_used) {
                          << ", time " << s.time << " s after a step of " << dt_used
                          << " s: the element inverted (excessive distortion, hourglassing or a too large step)");
   }
-  if (total.dt_element < 0) throw RunError("the model has no deformable element, so no stable time step exists");
+  if (!eroded.empty()) {
+    delete_elements(eroded);
+    mark_crashfront(eroded);
+  }
+  if (total.dt_element < 0) {
+    // Every deformable element is gone (eroded): the nodes fly on as free masses with the last step.
+    if (s.eroded_elements > 0 && s.dt_next_half > 0) return;
+    throw RunError("the model has no deformable element, so no stable time step exists");
+  }
   s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < total.dt_min;
   s.dt_next_half = model_.control.tssfac * (s.dt_contact_controls ? s.dt_contact : total.dt_min);
   s.dt_element = total.dt_element;
@@ -367,6 +399,55 @@ std::vector<double> Solver::acceleration() const {
   for (std::size_t i = 0; i < a.size(); ++i) a[i] = state_.f[i] * inverse_mass_[i / 3];
   for (const auto& con : model_.constraints) a[con.dof] = 0.0;  // constrained dofs follow their curve
   return a;
+}
+
+void Solver::count_erosion(Index id, int cause) {
+  ++state_.eroded_elements;
+  int part = 0;
+  for (const auto& blk : model_.blocks)
+    if (!blk.element_id.empty() && std::binary_search(blk.element_id.begin(), blk.element_id.end(), id)) part = blk.part;
+  for (auto& c : state_.erosion)
+    if (c.part == part && c.cause == cause) {
+      ++c.count;
+      return;
+    }
+  state_.erosion.push_back({part, cause, 1});
+}
+
+void Solver::mark_crashfront(const std::vector<Index>& eroded) {
+  // Elements that share a node with an eroded element become crashfront elements (MAT_054 SOFT).
+  bool any_damage = false;
+  for (const auto& blk : model_.blocks)
+    any_damage = any_damage || model_.materials[blk.material].kind == model::MaterialKind::CompositeDamage;
+  if (!any_damage) return;
+  if (node_elements_.empty()) {  // node -> (block, element) adjacency, built at the first erosion
+    const std::size_t n = model_.num_nodes();
+    node_elements_start_.assign(n + 1, 0);
+    for (const auto& blk : model_.blocks)
+      for (Index node : blk.conn) ++node_elements_start_[node + 1];
+    for (std::size_t i = 0; i < n; ++i) node_elements_start_[i + 1] += node_elements_start_[i];
+    node_elements_.resize(node_elements_start_[n]);
+    std::vector<Index> fill(node_elements_start_.begin(), node_elements_start_.end() - 1);
+    for (std::size_t b = 0; b < model_.blocks.size(); ++b)
+      for (std::size_t e = 0; e < model_.blocks[b].size(); ++e)
+        for (int k = 0; k < 8; ++k) node_elements_[fill[model_.blocks[b].conn[8 * e + k]]++] = {int(b), Index(e)};
+  }
+  for (Index id : eroded)
+    for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
+      const auto& blk = model_.blocks[b];
+      const auto it = std::lower_bound(blk.element_id.begin(), blk.element_id.end(), id);
+      if (it == blk.element_id.end() || *it != id) continue;
+      const std::size_t e = std::size_t(it - blk.element_id.begin());
+      for (int k = 0; k < 8; ++k) {
+        const Index node = blk.conn[8 * e + k];
+        for (Index p = node_elements_start_[node]; p < node_elements_start_[node + 1]; ++p) {
+          const auto [nb, ne] = node_elements_[p];
+          if (model_.materials[model_.blocks[nb].material].kind != model::MaterialKind::CompositeDamage) continue;
+          state_.blocks[nb].history[std::size_t(ne) * material::kCompositeDamageHistory +
+                                    material::composite_history::kCrashfront] = 1.0;
+        }
+      }
+    }
 }
 
 int Solver::threads_used() const {

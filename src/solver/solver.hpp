@@ -65,6 +65,8 @@ class Solver {
  private:
   void element_pass(double dt);
   void check_after_pass(double dt_used);
+  void count_erosion(Index id, int cause);
+  void mark_crashfront(const std::vector<Index>& eroded);
   // Gravity, contact and rigid-wall forces at x^{n+1}; dt = Delta t^{n+1/2} (0 at t = 0).
   void external_and_contact_forces(double dt);
 
@@ -89,6 +91,8 @@ class Solver {
   // Element deletion: alive[b][e] (empty vector = all alive) and, per chunk, its alive ranges.
   contact::AliveMask alive_;
   std::vector<std::vector<std::pair<Index, Index>>> chunk_ranges_;  // empty = whole chunk
+  std::vector<Index> node_elements_start_;               // CSR over nodes (built at the first erosion)
+  std::vector<std::pair<int, Index>> node_elements_;     // (block, element) touching each node
 };
 
 }  // namespace plyimpact::solver

@@ -20,6 +20,11 @@ struct BlockState {
   std::vector<double> internal_energy;   // (num_elements) J, stress work incl. nothing of q
   std::vector<double> hourglass_energy;  // (num_elements) J
   std::vector<double> volume;            // (num_elements) current volume, m^3 (updated every cycle)
+  // Materials with history (MAT_003/024, MAT_054): (num_elements * points, history size), layout
+  // documented by the material (material/plasticity.hpp, material/composite_damage.hpp).
+  std::vector<double> history;
+  std::vector<double> axes;        // (num_elements, 9) current material axes (rows a, b, c), MAT_054
+  std::vector<double> initial_dt;  // (num_elements) element step at t = 0 (TFAIL ratio), MAT_054
 };
 
 // Global energy balance at one time (J). total = kinetic + internal + hourglass + bulk_viscous +
@@ -31,6 +36,13 @@ struct Energies {
   double kinetic = 0, internal = 0, hourglass = 0, bulk_viscous = 0, external_work = 0;
   double contact = 0, friction = 0, rigid_wall = 0;
   double total() const { return kinetic + internal + hourglass + bulk_viscous + contact + rigid_wall; }
+};
+
+// Eroded elements of one part for one cause (ErosionCause), for history.csv and summary.json.
+struct ErosionCount {
+  int part = 0;
+  int cause = 0;
+  long count = 0;
 };
 
 struct State {
@@ -50,6 +62,11 @@ struct State {
   double initial_total_energy = 0;
   Energies last_balance;           // the balance at the start of the last step (t^n)
   std::vector<double> reaction;    // (num constrained sets, 3) constraint force resultant, N
+  // Erosion: elements deleted by their material (or the time-step limit) so far, and the internal
+  // plus hourglass energy they held (it stays in the totals; reported as eroded).
+  long eroded_elements = 0;
+  double eroded_energy = 0;
+  std::vector<ErosionCount> erosion;
 };
 
 }  // namespace plyimpact::solver
