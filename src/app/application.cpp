@@ -57,13 +57,13 @@ void print_mesher_extras(const model::Model& m, std::ostream& out) {
   for (const auto& i : m.interfaces)
     out << "  interface " << i.id << " (plies " << i.lower_ply + 1 << "/" << i.upper_ply + 1 << ", z = " << i.z
         << " m): " << i.lower_nodes.size() << " coincident node pairs, " << i.lower_segments.size() / 4
-        << " segment pairs; tagged for delamination, not tied or released by the solver yet\n";
+        << " segment pairs; tagged for delamination; bonded until tiebreak is implemented\n";
   if (m.impactor && m.impactor_quads.empty()) {
     const auto& imp = *m.impactor;
     char buf[256];
     std::snprintf(buf, sizeof buf,
                   "  impactor: %s, %zu surface quads, mass %.6g kg, centre of mass (%.6g, %.6g, %.6g) m, "
-                  "velocity (%.6g, %.6g, %.6g) m/s; not used by the solver until contact lands\n",
+                  "velocity (%.6g, %.6g, %.6g) m/s; it acts on the plate through the contacts that name it\n",
                   imp.rigid ? "rigid" : "deformable", imp.surface_quads.size() / 4, imp.mass, imp.centre_of_mass[0],
                   imp.centre_of_mass[1], imp.centre_of_mass[2], imp.velocity[0], imp.velocity[1], imp.velocity[2]);
     out << buf;

@@ -13,6 +13,16 @@
 namespace plyimpact::config::detail {
 namespace {
 
+// Density field of the metal cards a deformable impactor may use (MAT_001, MAT_003, MAT_024).
+double* density_of(MaterialSpec& m) {
+  if (auto* e = std::get_if<MatElastic>(&m.params)) return &e->RO;
+  if (auto* p = std::get_if<MatPlasticKinematic>(&m.params)) return &p->RO;
+  if (auto* p = std::get_if<MatPiecewiseLinear>(&m.params)) return &p->RO;
+  return nullptr;
+}
+const double* density_of(const MaterialSpec& m) { return density_of(const_cast<MaterialSpec&>(m)); }
+
+
 namespace u = units;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -375,7 +385,7 @@ void read_impactor(const Reader& r, Scene& scene) {
     imp.material = m->as_name();
     mat = find_material(scene, imp.material);
     if (!mat) m->fail("unknown material", "one of the materials: " + join(names_of(scene.materials)));
-    if (!std::holds_alternative<MatElastic>(mat->params)) m->fail("the impactor material must be MAT_001", "a MAT_001 material");
+    if (!density_of(*mat)) m->fail("the impactor material must be a metal card", "a MAT_001, MAT_003 or MAT_024 material");
   }
   const bool has_mass = r.has("mass"), has_density = r.has("density");
   if (has_mass && has_density) r.at("density", "").fail("give mass or density, not both", "mass or density");
@@ -384,16 +394,16 @@ void read_impactor(const Reader& r, Scene& scene) {
     imp.density = imp.mass / volume;  // density adjusted to the stated mass
   } else {
     imp.density = has_density ? r.quantity("density", u::density, Limits::positive("density"))
-                              : mat ? std::get<MatElastic>(mat->params).RO : 0.0;
+                              : mat ? *density_of(*mat) : 0.0;
     if (imp.density <= 0) r.fail("the impactor needs a mass, a density or a material", "mass, density or material");
     imp.mass = imp.density * volume;
   }
   if (!imp.rigid) {
-    if (!mat) r.at("material", "a MAT_001 material for a deformable impactor");
+    if (!mat) r.at("material", "a MAT_001, MAT_003 or MAT_024 material for a deformable impactor");
     MaterialSpec copy = *mat;
-    if (std::abs(std::get<MatElastic>(copy.params).RO - imp.density) > 1e-12 * imp.density) {
+    if (std::abs(*density_of(copy) - imp.density) > 1e-12 * imp.density) {
       copy.name = mat->name + "_impactor";  // same card, density adjusted to the stated mass
-      std::get<MatElastic>(copy.params).RO = imp.density;
+      *density_of(copy) = imp.density;
       scene.materials.push_back(copy);
     }
     PartSpec part;
