@@ -1,6 +1,8 @@
 // Reader of the *MAT_054/055 card. See mat054_reader.hpp.
 #include "config/mat054_reader.hpp"
 
+#include "config/orthotropic_card.hpp"
+
 #include <cctype>
 #include <cmath>
 
@@ -110,27 +112,7 @@ MatCompositeDamage read_mat054(const Reader& r) {
   const Limits fraction01 = Limits::interval(0, false, 1, false, "the factor");
   MatCompositeDamage m;
   // Card 1-2: elastic constants (all needed by a solid).
-  m.RO = r.quantity("RO", u::density, Limits::positive("density"));
-  m.EA = r.quantity("EA", u::stress, Limits::positive("EA"));
-  m.EB = r.quantity("EB", u::stress, Limits::positive("EB"));
-  m.EC = r.quantity("EC", u::stress, Limits::positive("EC"));
-  m.PRBA = r.quantity("PRBA", u::dimensionless);
-  m.PRCA = r.quantity("PRCA", u::dimensionless);
-  m.PRCB = r.quantity("PRCB", u::dimensionless);
-  m.GAB = r.quantity("GAB", u::stress, Limits::positive("GAB"));
-  m.GBC = r.quantity("GBC", u::stress, Limits::positive("GBC"));
-  m.GCA = r.quantity("GCA", u::stress, Limits::positive("GCA"));
-  // Minor ratios as on MAT_002: |nu_ji| < sqrt(E_j/E_i), else the user probably entered the major one.
-  auto check = [&](const char* key, double nu, const char* ei, double e_i, const char* ej, double e_j) {
-    const double bound = std::sqrt(e_i / e_j);
-    if (std::abs(nu) < bound) return;
-    r.at(key, "").fail(msg() << "|" << key << "| must be < sqrt(" << ei << "/" << ej << ") = " << bound
-                             << " (minor Poisson ratio; if you entered the major ratio, use " << nu * e_i / e_j << ")",
-                       msg() << "|" << key << "| < " << bound);
-  };
-  check("PRBA", m.PRBA, "EB", m.EB, "EA", m.EA);
-  check("PRCA", m.PRCA, "EC", m.EC, "EA", m.EA);
-  check("PRCB", m.PRCB, "EC", m.EC, "EB", m.EB);
+  read_orthotropic_constants(r, m);
   m.KF = r.quantity_or("KF", u::stress, 0.0, Limits::non_negative("KF"));
   m.TWOWAY = static_cast<int>(r.integer_or("2WAY", 0, Limits::interval(0, false, 1, false, "2WAY")));
   m.TI = static_cast<int>(r.integer_or("TI", 0, Limits::interval(0, false, 1, false, "TI")));

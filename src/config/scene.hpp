@@ -12,6 +12,7 @@
 
 #include "config/mat054_spec.hpp"
 #include "config/material_axes.hpp"
+#include "core/error.hpp"
 #include "core/types.hpp"
 
 namespace plyimpact::config {
@@ -23,6 +24,13 @@ struct SourceLocation {
   int column = 0;  // 1-based
   std::string key_path;  // e.g. "materials.ply.EA"
 };
+
+// Start of an error message about a scene value: "file:line:col: key.path: ".
+inline msg at(const SourceLocation& w) {
+  msg m;
+  m << w.file << ":" << w.line << ":" << w.column << ": " << w.key_path << ": ";
+  return m;
+}
 
 // *MAT_001 (*MAT_ELASTIC): isotropic, hypoelastic for solids.
 struct MatElastic {

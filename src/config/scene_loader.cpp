@@ -2,6 +2,7 @@
 #include "config/scene_loader.hpp"
 
 #include "config/mat054_reader.hpp"
+#include "config/orthotropic_card.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -186,30 +187,7 @@ MatOrthotropicElastic read_orthotropic(const Reader& r) {
   r.allow_keys({"card", "RO", "EA", "EB", "EC", "PRBA", "PRCA", "PRCB", "GAB", "GBC", "GCA", "AOPT", "A", "D", "V",
                 "BETA"});
   MatOrthotropicElastic m;
-  m.RO = r.quantity("RO", u::density, Limits::positive("density"));
-  m.EA = r.quantity("EA", u::stress, Limits::positive("EA"));
-  m.EB = r.quantity("EB", u::stress, Limits::positive("EB"));
-  m.EC = r.quantity("EC", u::stress, Limits::positive("EC"));
-  m.PRBA = r.quantity("PRBA", u::dimensionless);
-  m.PRCA = r.quantity("PRCA", u::dimensionless);
-  m.PRCB = r.quantity("PRCB", u::dimensionless);
-  m.GAB = r.quantity("GAB", u::stress, Limits::positive("GAB"));
-  m.GBC = r.quantity("GBC", u::stress, Limits::positive("GBC"));
-  m.GCA = r.quantity("GCA", u::stress, Limits::positive("GCA"));
-  // Minor ratios nu_ji (load along i, contraction along j, j the stiffer axis on a fibre ply):
-  // |nu_ij| < sqrt(E_i/E_j); the major ratio is nu_ji * E_j / E_i.
-  auto check = [&](std::string_view key, double nu, const char* ei, double e_i, const char* ej, double e_j) {
-    const double bound = std::sqrt(e_i / e_j);
-    if (std::abs(nu) < bound) return;
-    r.at(key, "").fail(msg() << "|" << key << "| must be < sqrt(" << ei << "/" << ej << ") = " << fmt(bound)
-                             << " (minor Poisson ratio; the major ratio would be " << key << "*" << ej << "/" << ei
-                             << " = " << fmt(nu * e_j / e_i) << "; if you entered the major ratio, use "
-                             << fmt(nu * e_i / e_j) << ")",
-                       msg() << "|" << key << "| < " << fmt(bound));
-  };
-  check("PRBA", m.PRBA, "EB", m.EB, "EA", m.EA);
-  check("PRCA", m.PRCA, "EC", m.EC, "EA", m.EA);
-  check("PRCB", m.PRCB, "EC", m.EC, "EB", m.EB);
+  read_orthotropic_constants(r, m);
   m.axes = read_axes(r);
   return m;
 }

@@ -10,12 +10,6 @@ namespace plyimpact::model {
 
 namespace {
 
-msg at(const config::SourceLocation& w) {
-  msg m;
-  m << w.file << ":" << w.line << ":" << w.column << ": " << w.key_path << ": ";
-  return m;
-}
-
 Material make_material(const config::MaterialSpec& spec) {
   Material m;
   m.name = spec.name;

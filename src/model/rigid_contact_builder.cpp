@@ -13,12 +13,6 @@ namespace plyimpact::model {
 
 namespace {
 
-msg at(const config::SourceLocation& w) {
-  msg m;
-  m << w.file << ":" << w.line << ":" << w.column << ": " << w.key_path << ": ";
-  return m;
-}
-
 int part_index(const Model& model, const std::string& name) {
   for (int i = 0; i < int(model.parts.size()); ++i)
     if (model.parts[i].name == name) return i;
