@@ -209,8 +209,8 @@ const char* composite_damage_cause_name(CompositeDamageCause c) {
 CompositeDamageParams make_composite_damage_params(const config::MatCompositeDamage& m,
                                                    const config::SourceLocation& where) {
   if (const auto bad = config::unsupported_field(m))
-    throw InputError(msg() << where.file << ":" << where.line << ":" << where.column << ": " << where.key_path
-                           << ": field not implemented: " << *bad
+    throw InputError(config::at(where)
+                           << "field not implemented: " << *bad
                            << "; allowed the card without this field (or its default)");
   config::MatOrthotropicElastic e;
   e.RO = m.RO, e.EA = m.EA, e.EB = m.EB, e.EC = m.EC, e.PRBA = m.PRBA, e.PRCA = m.PRCA, e.PRCB = m.PRCB;
@@ -222,8 +222,8 @@ CompositeDamageParams make_composite_damage_params(const config::MatCompositeDam
   p.GAB = m.GAB, p.GBC = m.GBC, p.GCA = m.GCA;
   p.strength = {m.XT, m.XC, m.YT, m.YC, m.SC};
   if (!(m.XT > 0 && m.XC > 0 && m.YT > 0 && m.YC > 0 && m.SC > 0))
-    throw InputError(msg() << where.file << ":" << where.line << ":" << where.column << ": " << where.key_path
-                           << ": strengths must be positive; found XT=" << m.XT << " XC=" << m.XC << " YT=" << m.YT
+    throw InputError(config::at(where)
+                           << "strengths must be positive; found XT=" << m.XT << " XC=" << m.XC << " YT=" << m.YT
                            << " YC=" << m.YC << " SC=" << m.SC << "; allowed XT, XC, YT, YC, SC > 0");
   p.CRIT = m.CRIT, p.BETA = m.BETA, p.ALPH = m.ALPH;
   p.FBRT = m.FBRT, p.YCFAC = m.YCFAC, p.SOFT = m.SOFT, p.SOFTG = m.SOFTG;
@@ -233,8 +233,8 @@ CompositeDamageParams make_composite_damage_params(const config::MatCompositeDam
   p.TFAIL = m.TFAIL;
   p.EPSF = m.EPSF, p.EPSR = m.EPSR, p.TSMD = m.TSMD > 0 ? m.TSMD : 0.9;
   if (p.EPSF > 0 && !(std::abs(p.EPSR) > p.EPSF))
-    throw InputError(msg() << where.file << ":" << where.line << ":" << where.column << ": " << where.key_path
-                           << ": transverse shear damage needs |EPSR| > EPSF; found EPSF=" << p.EPSF
+    throw InputError(config::at(where)
+                           << "transverse shear damage needs |EPSR| > EPSF; found EPSF=" << p.EPSF
                            << " EPSR=" << p.EPSR << "; allowed |EPSR| > EPSF");
   return p;
 }

@@ -33,8 +33,8 @@ Stiffness6 orthotropic_stiffness(const config::MatOrthotropicElastic& m, const c
   const double delta = 1.0 - nu_ab * m.PRBA - nu_bc * m.PRCB - nu_ac * m.PRCA - 2.0 * m.PRBA * m.PRCB * nu_ac;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(S);
   if (!(delta > 0.0) || !(eig.eigenvalues().minCoeff() > 0.0)) {
-    throw InputError(msg() << where.file << ":" << where.line << ":" << where.column << ": " << where.key_path
-                           << ": orthotropic constants give a stiffness that is not positive definite (1 - nu_ab nu_ba"
+    throw InputError(config::at(where)
+                           << "orthotropic constants give a stiffness that is not positive definite (1 - nu_ab nu_ba"
                               " - nu_bc nu_cb - nu_ca nu_ac - 2 nu_ba nu_cb nu_ac = "
                            << delta << "); found PRBA=" << m.PRBA << " PRCA=" << m.PRCA << " PRCB=" << m.PRCB
                            << "; allowed: constants with a positive definite compliance. PRBA is LS-DYNA's minor "
