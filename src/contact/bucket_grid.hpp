@@ -1,7 +1,8 @@
 // Bucket sort for contact search (LS-DYNA Theory Manual, "Bucket sorting"): the bounding box of the
-// contact segments is split into cubic buckets of an edge at least the largest segment size; each
-// segment is listed in every bucket its box (expanded by a search margin) overlaps, so a node
-// needs to look in one bucket only. Buckets are a dense CSR array; a rebuild reuses the storage
+// contact segments is split into cubic buckets of the caller's edge (penalty contact: the median
+// segment size; LS-DYNA uses the largest, which puts a graded mesh's whole fine zone in one
+// bucket); each segment is listed in every bucket its box (expanded by its search margin)
+// overlaps, so a node needs to look in one bucket only. Buckets are a dense CSR array; a rebuild reuses the storage
 // (no allocation once the sizes have settled). Cost: O(segments + buckets), buckets capped at
 // ~2 per segment by enlarging the edge, so the search is linear in the surface size.
 #pragma once

@@ -5,6 +5,8 @@
 //               when a contact node has moved a quarter of the search allowance; closest-point
 //               projection (contact/geometry) with MAXPAR; a node penetrates when its gap
 //               g = n . (x_s - x_c) - g_0 lies in (-depth, 0) (g_0: initial-penetration offset).
+//               Allowance and bucket edge follow the median segment size and each segment's box
+//               is expanded by its own margin (graded meshes: a fine zone is not one bucket).
 //   stiffness : SOFT 0  k = min(k_node, k_seg), k_seg = SLSFAC SF K A^2 / V (PENOPT 1)
 //               SOFT 1  k = max(SOFT 0 value, SOFSCL 0.5 m* / dt_c^2), m* = min(node, segment mass)
 //               SOFT 2  k = 0.5 SLSFAC SF (m1 m2 / (m1 + m2)) / dt_c^2, m = segment masses
@@ -87,6 +89,7 @@ class PenaltyContact {
   long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth) const;
   void estimate_stiffness_range();
   void update_node_normals(const double* x);
+  void refresh_segments(const double* x);  // spheres and frames at x
 
   const model::Model& model_;
   model::Contact def_;
@@ -103,6 +106,7 @@ class PenaltyContact {
   std::vector<double> seg_node_mass_;  // mean nodal mass of its nodes
   std::vector<double> seg_depth_;  // release depth, m
   std::vector<double> seg_sphere_; // (S, 4) centre and radius, refreshed every pass
+  std::vector<double> seg_frame_;  // (S, 4) unit diagonal normal, largest corner-normal deviation
   // Slave nodes.
   std::vector<Index> sn_node_;
   std::vector<char> sn_side_;
@@ -118,9 +122,11 @@ class PenaltyContact {
   std::vector<char> union_side_a_;
   std::vector<double> fc_, fc_prev_, x_sort_;
   std::vector<Index> sn_local_;    // slave node -> union index
-  BucketGrid grid_;
-  std::vector<double> boxes_;
-  double cell_ = 0, allowance_ = 0, margin_ = 0;
+  BucketGrid grid_[2];                  // per side (single surface: [0] only)
+  std::vector<Index> side_segs_[2];     // grid item -> segment
+  std::vector<double> boxes_[2];
+  std::vector<double> seg_margin_; // (S) search margin of each segment's box, m
+  double cell_ = 0, allowance_ = 0, margin_ = 0, search_cell_ = 0;  // median extent, allowance, largest margin, bucket edge
   long cycles_since_sort_ = 0, sorts_ = 0;
   double energy_ = 0, friction_energy_ = 0;
   ContactForces forces_;

@@ -42,6 +42,18 @@ output::Frame make_frame(const Solver& solver) {
   for (std::size_t i = 0; i < 3 * n; ++i) displacement.values[i] = state.x[i] - model.X[i];
   output::Field acceleration{"acceleration", 3, solver.acceleration(), {}};
   frame.point_fields = {std::move(displacement), std::move(velocity), std::move(acceleration)};
+  // Contact force of the last cycle per node (N, sum over the contacts, friction included): the
+  // contacts keep it for their force-carrying nodes, so this costs one pass over those nodes.
+  if (!solver.contacts().empty()) {
+    output::Field contact_force{"contact_force", 3, std::vector<double>(3 * n, 0.0), {}};
+    for (const auto& c : solver.contacts()) {
+      const auto& nodes = c.force_nodes();
+      const auto& fc = c.node_forces();
+      for (std::size_t u = 0; u < nodes.size(); ++u)
+        for (int d = 0; d < 3; ++d) contact_force.values[3 * std::size_t(nodes[u]) + d] += fc[3 * u + d];
+    }
+    frame.point_fields.push_back(std::move(contact_force));
+  }
 
   output::Field stress{"stress", 6, {}, kTensorComponents}, stress_m{"stress_material", 6, {}, kTensorComponents};
   output::Field strain{"strain", 6, {}, kTensorComponents}, strain_m{"strain_material", 6, {}, kTensorComponents};

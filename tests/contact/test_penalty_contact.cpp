@@ -1,7 +1,7 @@
 // Penalty contact between bodies (contact/penalty_contact), checked against conservation laws and
 // closed-form kinematics:
-//  - Head-on impact of two equal deformable steel blocks (automatic surface to surface, SOFT 0 and
-//    SOFT 1): the penalty forces on a node and on the segment nodes are equal and opposite (shape
+//  - Head-on impact of two equal deformable steel blocks (automatic surface to surface, SOFT 0, 1
+//    and 2): the penalty forces on a node and on the segment nodes are equal and opposite (shape
 //    functions sum to one) and element forces sum to zero, so total momentum stays at its initial
 //    value (zero) to round-off: |sum m v| < 1e-12 of one block's momentum. Energy: KE + IE + HG +
 //    contact energy stays at the initial KE (energy ratio within 1 %, the trapezoid booking of the
@@ -77,7 +77,7 @@ TEST_P(HeadOn, MomentumToRoundOffAndEnergyAccountedFor) {
   EXPECT_LT(std::abs(e.contact), 0.05 * max_contact + 1e-12);
 }
 
-INSTANTIATE_TEST_SUITE_P(Soft, HeadOn, ::testing::Values(0, 1));
+INSTANTIATE_TEST_SUITE_P(Soft, HeadOn, ::testing::Values(0, 1, 2));
 
 TEST(RigidImpactor, MomentumOfBodyAndBlockConserved) {
   const std::string yaml = std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
