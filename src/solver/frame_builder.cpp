@@ -1,5 +1,7 @@
 #include "solver/frame_builder.hpp"
 
+#include "solver/frame_material_fields.hpp"
+
 #include <Eigen/Dense>
 #include <cmath>
 
@@ -122,6 +124,7 @@ output::Frame make_frame(const Solver& solver) {
   frame.cell_fields = {std::move(stress), std::move(stress_m), std::move(strain), std::move(strain_m), std::move(vm),
                        std::move(ie),     std::move(hg),       std::move(relvol), std::move(axis_a)};
   frame.cell_int_fields = {std::move(part_id), std::move(element_id)};
+  add_material_fields(solver, frame);  // alive flag, plastic strain, MAT_054 damage fields
   return frame;
 }
 

@@ -44,6 +44,9 @@ class Solver {
   // Acceleration f/m (0 at massless nodes), for output.
   std::vector<double> acceleration() const;
 
+  // False once element e of block b has been deleted (eroded).
+  bool element_alive(int block, Index e) const { return alive_[block].empty() || alive_[block][e] != 0; }
+
   // OpenMP threads the cycle actually uses (1 below the size where a parallel pass pays off).
   int threads_used() const;
 

@@ -8,6 +8,8 @@
 #include <iostream>
 
 #include "../core/support.hpp"
+#include "material/composite_damage_output.hpp"
+#include "solver/frame_material_fields.hpp"
 
 namespace plyimpact {
 namespace {
@@ -51,6 +53,14 @@ TEST(ErosionSolver, Mat054ElementFailsAtXTAndIsEroded) {
   ASSERT_EQ(s.state().erosion.size(), 1u);
   EXPECT_STREQ(solver::erosion_cause_name(s.state().erosion[0].cause), solver::erosion_cause_name(
       int(solver::ErosionCause::CompositeBase) + int(material::CompositeDamageCause::FibreTension)));
+  // The output marks the element as eroded and carries the damage fields (fibre-tension flag 0).
+  output::Frame frame;
+  solver::add_material_fields(s, frame);
+  ASSERT_EQ(frame.cell_int_fields.size(), 1u);
+  EXPECT_EQ(frame.cell_int_fields[0].name, "alive");
+  EXPECT_EQ(frame.cell_int_fields[0].values[0], 0);
+  ASSERT_EQ(frame.cell_fields.size(), std::size_t(material::kCompositeDamageOutputs));
+  EXPECT_EQ(frame.cell_fields[0].values[0], 0.0) << frame.cell_fields[0].name;  // e_f: failed
   // After erosion the element carries nothing: the pulled face needs no force.
   for (int i = 0; i < 10; ++i) s.step();
   EXPECT_EQ(s.state().blocks[0].stress[0], 0.0);
