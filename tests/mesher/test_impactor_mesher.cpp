@@ -10,6 +10,7 @@
 #include <numbers>
 #include <set>
 
+#include "scene_cards.hpp"
 #include "config/scene_loader.hpp"
 #include "element/hex8.hpp"
 #include "mesh/scene_mesher.hpp"
@@ -25,13 +26,7 @@ constexpr double kPi = std::numbers::pi;
 config::Scene scene(const std::string& impactor) {
   return config::load_scene_from_string(R"(units: mm-t-s-MPa
 control: {termination_time: 1.0e-6}
-materials:
-  ply: {card: MAT_002, RO: 1.55e-9, EA: 157 GPa, EB: 8.5 GPa, EC: 8.5 GPa, PRBA: 0.019, PRCA: 0.019,
-        PRCB: 0.53, GAB: 4.2 GPa, GBC: 2.2 GPa, GCA: 4.2 GPa, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0]}
-  steel: {card: MAT_001, RO: 7.85e-9, E: 210 GPa, PR: 0.3}
-sections:
-  s: {ELFORM: 1, IHQ: 4}
-laminate: {length: 10, width: 10, ply_thickness: 0.25, stacking: "[0/90]", material: ply, section: s,
+)" + std::string(test::kPlyAndSteelCards) + R"(laminate: {length: 10, width: 10, ply_thickness: 0.25, stacking: "[0/90]", material: ply, section: s,
            element_size: 5, interfaces: none}
 impactor: {)" + impactor + "}\n",
                                         "impactor.yaml");
