@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 
+#include "scene_cards.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "element/hex8.hpp"
@@ -22,12 +23,7 @@ namespace {
 std::string scene_text(const std::string& laminate) {
   return R"(units: mm-t-s-MPa
 control: {termination_time: 1.0e-6}
-materials:
-  ply: {card: MAT_002, RO: 1.55e-9, EA: 157 GPa, EB: 8.5 GPa, EC: 8.5 GPa, PRBA: 0.019, PRCA: 0.019,
-        PRCB: 0.53, GAB: 4.2 GPa, GBC: 2.2 GPa, GCA: 4.2 GPa, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0]}
-sections:
-  s: {ELFORM: 1, IHQ: 4}
-laminate:
+)" + std::string(test::kPlyCards) + R"(laminate:
   material: ply
   section: s
 )" + laminate;

@@ -18,12 +18,7 @@ using namespace plyimpact;
 TEST(MesherSmoke, LaminateWithRigidSphereRunsAFewCycles) {
   const config::Scene scene = config::load_scene_from_string(R"(units: mm-t-s-MPa
 control: {termination_time: 1.0e-5}
-materials:
-  ply: {card: MAT_002, RO: 1.55e-9, EA: 157 GPa, EB: 8.5 GPa, EC: 8.5 GPa, PRBA: 0.019, PRCA: 0.019,
-        PRCB: 0.53, GAB: 4.2 GPa, GBC: 2.2 GPa, GCA: 4.2 GPa, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0]}
-sections:
-  s: {ELFORM: 1, IHQ: 4}
-laminate:
+)" + std::string(test::kPlyCards) + R"(laminate:
   length: 30
   width: 20
   ply_thickness: 0.25
