@@ -7,6 +7,7 @@
 #include "solver/element_update.hpp"
 
 #include <cmath>
+#include <cstdint>
 
 #include "element/hex8.hpp"
 #include "material/composite_damage.hpp"
@@ -176,6 +177,15 @@ inline void record_dt(ChunkResult& r, Index id, double dte) {
 constexpr int kLanes = 8;
 #define PLYIMPACT_LANES _Pragma("omp simd") for (int l = 0; l < kLanes; ++l)
 
+// Twice the area of the hex8 face (n0 n1 n2 n3) of lane l, squared: |(x2 - x0) x (x3 - x1)|^2.
+// A function, not a lambda: GCC does not vectorise `omp simd` loops that hold closures.
+inline double face_area2x2(const double (&xe)[3][8][kLanes], int l, int n0, int n1, int n2, int n3) {
+  const double d1x = xe[0][n2][l] - xe[0][n0][l], d1y = xe[1][n2][l] - xe[1][n0][l], d1z = xe[2][n2][l] - xe[2][n0][l];
+  const double d2x = xe[0][n3][l] - xe[0][n1][l], d2y = xe[1][n3][l] - xe[1][n1][l], d2z = xe[2][n3][l] - xe[2][n1][l];
+  const double cx = d1y * d2z - d1z * d2y, cy = d1z * d2x - d1x * d2z, cz = d1x * d2y - d1y * d2x;
+  return cx * cx + cy * cy + cz * cz;
+}
+
 // Total-Lagrangian stress of lane l: F = J_x J_X^-1; E = (F^T F - I)/2 (engineering Voigt);
 // S = C E; sigma = F S F^T / det F. `stiffness(i)` returns entry i of the 6x6 global stiffness.
 template <class Stiffness>
@@ -223,18 +233,20 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     Index elem[kLanes];
     for (int l = 0; l < kLanes; ++l) elem[l] = e0 + std::min(l, n - 1);
 
-    alignas(64) double xe[3][8][kLanes], ve[3][8][kLanes];
+    // Gather the nodal coordinates and velocities lane-wise: one SIMD gather per (node, component)
+    // instead of 48 scalar loads and stores per element.
+    alignas(64) std::int64_t dof0[8][kLanes];  // 3 x node index of local node k of lane l
     for (int l = 0; l < kLanes; ++l) {
       const Index* conn = &blk.conn[8 * std::size_t(elem[l])];
-      for (int k = 0; k < 8; ++k) {
-        const double* px = x + 3 * std::size_t(conn[k]);
-        const double* pv = v + 3 * std::size_t(conn[k]);
-        for (int i = 0; i < 3; ++i) {
-          xe[i][k][l] = px[i];
-          ve[i][k][l] = pv[i];
-        }
-      }
+      for (int k = 0; k < 8; ++k) dof0[k][l] = 3 * std::int64_t(conn[k]);
     }
+    alignas(64) double xe[3][8][kLanes], ve[3][8][kLanes];
+    for (int k = 0; k < 8; ++k)
+      for (int i = 0; i < 3; ++i)
+        PLYIMPACT_LANES {
+          xe[i][k][l] = x[dof0[k][l] + i];
+          ve[i][k][l] = v[dof0[k][l] + i];
+        }
     // Centre Jacobians of x and v: J[3a+c] = sum_k u_a,k xi_c,k / 8.
     alignas(64) double Jx[9][kLanes], Jv[9][kLanes];
     for (int a = 0; a < 3; ++a) {
@@ -306,28 +318,38 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       }
     }
     // Mid-step velocity gradient L = J_v (J_x - dt/2 J_v)^-1, rate of deformation D, spin W.
-    alignas(64) double L[9][kLanes], D[6][kLanes], Wsk[9][kLanes], trD[kLanes], rho[kLanes];
-    bool ok[kLanes];
+    // Every lane loop below has straight-line bodies over per-lane scalars (no local arrays, no
+    // inner loops with lanes outermost), the shape GCC's `omp simd` vectorises reliably.
+    alignas(64) double Mi[9][kLanes], L[9][kLanes], D[6][kLanes], Wax[3][kLanes], trD[kLanes], rho[kLanes], det_mid[kLanes];
     PLYIMPACT_LANES {
-      double m[9];
-      for (int i = 0; i < 9; ++i) m[i] = Jx[i][l] - 0.5 * dt * Jv[i][l];
-      const double c00 = m[4] * m[8] - m[5] * m[7], c01 = m[5] * m[6] - m[3] * m[8], c02 = m[3] * m[7] - m[4] * m[6];
-      const double det = m[0] * c00 + m[1] * c01 + m[2] * c02;
+      const double h = 0.5 * dt;
+      const double m0 = Jx[0][l] - h * Jv[0][l], m1 = Jx[1][l] - h * Jv[1][l], m2 = Jx[2][l] - h * Jv[2][l];
+      const double m3 = Jx[3][l] - h * Jv[3][l], m4 = Jx[4][l] - h * Jv[4][l], m5 = Jx[5][l] - h * Jv[5][l];
+      const double m6 = Jx[6][l] - h * Jv[6][l], m7 = Jx[7][l] - h * Jv[7][l], m8 = Jx[8][l] - h * Jv[8][l];
+      const double c00 = m4 * m8 - m5 * m7, c01 = m5 * m6 - m3 * m8, c02 = m3 * m7 - m4 * m6;
+      const double det = m0 * c00 + m1 * c01 + m2 * c02;
       const double rd = 1.0 / det;
-      const double inv[9] = {c00 * rd, (m[2] * m[7] - m[1] * m[8]) * rd, (m[1] * m[5] - m[2] * m[4]) * rd,
-                             c01 * rd, (m[0] * m[8] - m[2] * m[6]) * rd, (m[2] * m[3] - m[0] * m[5]) * rd,
-                             c02 * rd, (m[1] * m[6] - m[0] * m[7]) * rd, (m[0] * m[4] - m[1] * m[3]) * rd};
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          L[3 * i + j][l] = Jv[3 * i][l] * inv[j] + Jv[3 * i + 1][l] * inv[3 + j] + Jv[3 * i + 2][l] * inv[6 + j];
+      Mi[0][l] = c00 * rd, Mi[1][l] = (m2 * m7 - m1 * m8) * rd, Mi[2][l] = (m1 * m5 - m2 * m4) * rd;
+      Mi[3][l] = c01 * rd, Mi[4][l] = (m0 * m8 - m2 * m6) * rd, Mi[5][l] = (m2 * m3 - m0 * m5) * rd;
+      Mi[6][l] = c02 * rd, Mi[7][l] = (m1 * m6 - m0 * m7) * rd, Mi[8][l] = (m0 * m4 - m1 * m3) * rd;
+      det_mid[l] = det;
+    }
+    bool ok[kLanes];  // a valid element (set outside the lane loops: GCC does not vectorise bool lanes)
+    for (int l = 0; l < kLanes; ++l) ok[l] = V[l] > 0 && det_mid[l] != 0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        PLYIMPACT_LANES L[3 * i + j][l] =
+            Jv[3 * i][l] * Mi[j][l] + Jv[3 * i + 1][l] * Mi[3 + j][l] + Jv[3 * i + 2][l] * Mi[6 + j][l];
+    PLYIMPACT_LANES {
       D[0][l] = L[0][l], D[1][l] = L[4][l], D[2][l] = L[8][l];
       D[3][l] = 0.5 * (L[1][l] + L[3][l]);
       D[4][l] = 0.5 * (L[5][l] + L[7][l]);
       D[5][l] = 0.5 * (L[6][l] + L[2][l]);
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Wsk[3 * i + j][l] = 0.5 * (L[3 * i + j][l] - L[3 * j + i][l]);
+      // Axial vector of the spin W = (L - L^T)/2: (W_zy, W_xz, W_yx).
+      Wax[0][l] = 0.5 * (L[7][l] - L[5][l]);
+      Wax[1][l] = 0.5 * (L[2][l] - L[6][l]);
+      Wax[2][l] = 0.5 * (L[3][l] - L[1][l]);
       trD[l] = D[0][l] + D[1][l] + D[2][l];
-      ok[l] = V[l] > 0 && det != 0;
       rho[l] = rho0 * blk.volume0[elem[l]] / V[l];
     }
     // Incremental rotation (Cayley form of Hughes-Winget), for the hypoelastic stress and the
@@ -336,7 +358,7 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     if constexpr (!kTotalLagrangian || kStiffness) {  // every incremental material and IHQ 4/5
       PLYIMPACT_LANES {
         const double h = 0.5 * dt;
-        const double w1 = h * Wsk[7][l], w2 = h * Wsk[2][l], w3 = h * Wsk[3][l];
+        const double w1 = h * Wax[0][l], w2 = h * Wax[1][l], w3 = h * Wax[2][l];
         const double ww = w1 * w1 + w2 * w2 + w3 * w3, cc = 2.0 / (1.0 + ww);
         R[0][l] = 1 + cc * (w1 * w1 - ww), R[1][l] = cc * (-w3 + w1 * w2), R[2][l] = cc * (w2 + w1 * w3);
         R[3][l] = cc * (w3 + w2 * w1), R[4][l] = 1 + cc * (w2 * w2 - ww), R[5][l] = cc * (-w1 + w2 * w3);
@@ -347,17 +369,16 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     // update because the damage material's TFAIL compares it with the initial step.
     alignas(64) double dte[kLanes];
     PLYIMPACT_LANES {
-      constexpr int kFaces[6][4] = {{0, 1, 2, 3}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-      double max_area2 = 0;
-      for (const auto& fc : kFaces) {
-        const double d1x = xe[0][fc[2]][l] - xe[0][fc[0]][l], d1y = xe[1][fc[2]][l] - xe[1][fc[0]][l],
-                     d1z = xe[2][fc[2]][l] - xe[2][fc[0]][l];
-        const double d2x = xe[0][fc[3]][l] - xe[0][fc[1]][l], d2y = xe[1][fc[3]][l] - xe[1][fc[1]][l],
-                     d2z = xe[2][fc[3]][l] - xe[2][fc[1]][l];
-        const double cx = d1y * d2z - d1z * d2y, cy = d1z * d2x - d1x * d2z, cz = d1x * d2y - d1y * d2x;
-        max_area2 = std::max(max_area2, cx * cx + cy * cy + cz * cz);
-      }
-      dte[l] = element_time_step(V[l], 0.5 * std::sqrt(max_area2), c, trD[l], q1, q2);
+      double area2 = face_area2x2(xe, l, 0, 1, 2, 3);
+      const double a1 = face_area2x2(xe, l, 4, 5, 6, 7), a2 = face_area2x2(xe, l, 0, 1, 5, 4);
+      const double a3 = face_area2x2(xe, l, 1, 2, 6, 5), a4 = face_area2x2(xe, l, 2, 3, 7, 6);
+      const double a5 = face_area2x2(xe, l, 3, 0, 4, 7);
+      area2 = a1 > area2 ? a1 : area2;
+      area2 = a2 > area2 ? a2 : area2;
+      area2 = a3 > area2 ? a3 : area2;
+      area2 = a4 > area2 ? a4 : area2;
+      area2 = a5 > area2 ? a5 : area2;
+      dte[l] = element_time_step(V[l], 0.5 * std::sqrt(area2), c, trD[l], q1, q2);
     }
     // Stress update.
     alignas(64) double s[6][kLanes], s_old[6][kLanes];
@@ -476,14 +497,21 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     // edges, arithmetic >= geometric mean), and Newton on y^3 = V converges monotonically from
     // above; 7 iterations reach round-off for aspect ratios up to ~50. Unlike std::cbrt it vectorises.
     alignas(64) double cbrtV[kLanes];
+    PLYIMPACT_LANES cbrtV[l] = 0;
+    for (int c3 = 0; c3 < 3; ++c3)
+      PLYIMPACT_LANES cbrtV[l] +=
+          std::sqrt(Jx[c3][l] * Jx[c3][l] + Jx[3 + c3][l] * Jx[3 + c3][l] + Jx[6 + c3][l] * Jx[6 + c3][l]);
     PLYIMPACT_LANES {
-      double y = 0;
-      for (int c3 = 0; c3 < 3; ++c3)
-        y += std::sqrt(Jx[c3][l] * Jx[c3][l] + Jx[3 + c3][l] * Jx[3 + c3][l] + Jx[6 + c3][l] * Jx[6 + c3][l]);
-      y *= 2.0 / 3.0;
-      const double vol = ok[l] ? V[l] : 1.0;
-      y = ok[l] ? y : 1.0;
-      for (int it = 0; it < 7; ++it) y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
+      // No guard for a non-positive volume: that lane is discarded (and the run stopped) below.
+      const double vol = V[l];
+      double y = cbrtV[l] * (2.0 / 3.0);
+      y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
+      y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
+      y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
+      y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
+      y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
+      y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
+      y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
       cbrtV[l] = y;
     }
     // Bulk viscosity (compression only). Its work uses the trapezoid rule, (q_old + q_new)/2, as
@@ -510,22 +538,17 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     // Hourglass: gamma = Gamma - (Gamma . x) b (IHQ 2-5) or Gamma (IHQ 1); rates g = v . gamma.
     alignas(64) double gamma[4][8][kLanes], g[3][4][kLanes], Qh[3][4][kLanes], dHG[kLanes];
     for (int a = 0; a < 4; ++a) {
-      PLYIMPACT_LANES {
-        double h0 = 0, h1 = 0, h2 = 0;
-        if constexpr (IHQ != 1) {
-          for (int k = 0; k < 8; ++k) {
-            h0 += element::kGamma[a][k] * xe[0][k][l];
-            h1 += element::kGamma[a][k] * xe[1][k][l];
-            h2 += element::kGamma[a][k] * xe[2][k][l];
-          }
-        }
-        for (int k = 0; k < 8; ++k)
-          gamma[a][k][l] = element::kGamma[a][k] - (h0 * b[0][k][l] + h1 * b[1][k][l] + h2 * b[2][k][l]);
-        for (int i = 0; i < 3; ++i) {
-          double sum = 0;
-          for (int k = 0; k < 8; ++k) sum += ve[i][k][l] * gamma[a][k][l];
-          g[i][a][l] = sum;
-        }
+      alignas(64) double h[3][kLanes] = {};
+      if constexpr (IHQ != 1) {
+        for (int i = 0; i < 3; ++i)
+          for (int k = 0; k < 8; ++k) PLYIMPACT_LANES h[i][l] += element::kGamma[a][k] * xe[i][k][l];
+      }
+      for (int k = 0; k < 8; ++k)
+        PLYIMPACT_LANES gamma[a][k][l] =
+            element::kGamma[a][k] - (h[0][l] * b[0][k][l] + h[1][l] * b[1][k][l] + h[2][l] * b[2][k][l]);
+      for (int i = 0; i < 3; ++i) {
+        PLYIMPACT_LANES g[i][a][l] = 0;
+        for (int k = 0; k < 8; ++k) PLYIMPACT_LANES g[i][a][l] += ve[i][k][l] * gamma[a][k][l];
       }
     }
     alignas(64) double Qs[12][kLanes];  // stored hourglass forces of the previous cycle

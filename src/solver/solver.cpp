@@ -47,6 +47,7 @@ Solver::Solver(const model::Model& model) : model_(model) {
     for (Index node : model.rigid_bodies[b].nodes) {
       node_body_[node] = int(b);
       node_mass_[node] = 0.0;
+      rigid_nodes_.push_back(node);
     }
   if (!model.rigid_bodies.empty()) rigid_ = std::make_unique<RigidBodies>(model);
   inverse_mass_.resize(n);
@@ -220,7 +221,7 @@ void Solver::step() {
   const long num_chunks = long(node_chunk_ke_.size());
   double* __restrict x = s.x.data();
   double* __restrict v = s.v.data();
-  const double* __restrict f = s.f.data();
+  double* __restrict f = s.f.data();
   const double* __restrict mass = node_mass_.data();
   const double* __restrict inv_mass = inverse_mass_.data();
   const bool parallel = model_.num_elements() >= kParallelMinElements;
@@ -230,10 +231,13 @@ void Solver::step() {
     double ke = 0;
     for (std::size_t i = begin; i < end; ++i) {
       const double m = mass[i], im = inv_mass[i];
+      const bool keep_force = node_body_[i] >= 0;  // read by the rigid-body update below
       for (int d = 0; d < 3; ++d) {
         const std::size_t dof = 3 * i + d;
         const double vo = v[dof];
         double vn = vo + dt_n * f[dof] * im;
+        // The force is consumed here: clearing it now saves element_pass a serial sweep of f.
+        if (!keep_force) f[dof] = 0;
         const int c = dof_constraint_[dof];
         if (c >= 0) {
           const int curve = model_.constraints[c].curve;
@@ -300,7 +304,10 @@ void Solver::step() {
 
 void Solver::element_pass(double dt) {
   State& s = state_;
-  std::fill(s.f.begin(), s.f.end(), 0.0);
+  // f is zero here except at rigid-body nodes: the node update clears what it consumes (and the
+  // constructor starts from zero).
+  for (Index node : rigid_nodes_)
+    for (int d = 0; d < 3; ++d) s.f[3 * std::size_t(node) + d] = 0;
   const auto& schedule = model_.schedule;
   const double* x = s.x.data();
   const double* v = s.v.data();

@@ -85,6 +85,7 @@ class Solver {
   std::vector<std::vector<int>> set_constraints_;  // per constrained set: constraint indices
   std::vector<double> node_mass_;          // (num_nodes) lumped mass, 0 at rigid-body nodes (their body moves them)
   std::vector<int> node_body_;             // (num_nodes) rigid body index, -1
+  std::vector<Index> rigid_nodes_;         // nodes of the rigid bodies (their force outlives the node update)
   std::unique_ptr<RigidBodies> rigid_;     // null without rigid bodies
   std::vector<contact::PenaltyContact> contacts_;
   std::vector<contact::RigidWallConstraint> walls_;
