@@ -124,6 +124,37 @@ TEST_P(ErosionSolver, BarPulledApartKeepsEnergyBalance) {
   EXPECT_NEAR(s.energy_ratio(), 1.0, 0.01);
 }
 
+TEST(ErosionSolverElform2, OneFailedPointErodesTheElement) {
+  // A non-uniform pull: only the edge x = L, y = L of a cube is pulled, so the eight points strain
+  // differently. Our rule for ELFORM 2 (as NUMFIP = 1): the element goes when its first point
+  // reaches FS. At that cycle the most strained point is at FS and at least one other is below.
+  const double FS = 0.05;
+  const std::string yaml =
+      "units: SI\ncontrol: {termination_time: 1.0e-3, tssfac: 0.6}\n"
+      "materials:\n  m: {card: MAT_003, RO: 7850, E: 200e9, PR: 0.3, SIGY: 250e6, ETAN: 2e9, FS: 0.05}\n"
+      "sections:\n  s: {ELFORM: 2}\nparts:\n  p: {material: m, section: s}\n"
+      "mesh:\n  boxes: [{part: p, size: [1.0e-3, 1.0e-3, 1.0e-3], elements: [1, 1, 1]}]\n"
+      "node_sets:\n  x0: {plane: {axis: x, value: 0}}\n  y0: {plane: {axis: y, value: 0}}\n"
+      "  z0: {plane: {axis: z, value: 0}}\n  edge: {box: {min: [1.0e-3, 1.0e-3, 0], max: [1.0e-3, 1.0e-3, 1.0e-3]}}\n"
+      "boundary_conditions:\n  - {node_set: x0, fix: [x]}\n  - {node_set: y0, fix: [y]}\n  - {node_set: z0, fix: [z]}\n"
+      "  - {node_set: edge, velocity: {dofs: [x], curve: [[0, 0], [2.0e-5, 1.0], [1, 1.0]]}}\n";
+  const model::Model model = test::model_from_yaml(yaml, "elform2_edge_pull.yaml");
+  solver::Solver s(model);
+  while (s.state().time < 1.0e-3 && s.state().eroded_elements == 0) s.step();
+  ASSERT_EQ(s.state().eroded_elements, 1);
+  double ep_min = 1e9, ep_max = 0;
+  for (int g = 0; g < 8; ++g) {
+    const double ep = s.state().blocks[0].history[std::size_t(g) * material::kPlasticityHistory];
+    ep_min = std::min(ep_min, ep), ep_max = std::max(ep_max, ep);
+  }
+  std::cout << "ELFORM 2 edge pull: eroded at cycle " << s.state().cycle << ", plastic strain of the points "
+            << ep_min << " .. " << ep_max << " (FS " << FS << ")\n";
+  EXPECT_GE(ep_max, FS);
+  EXPECT_LT(ep_min, FS);
+  EXPECT_STREQ(solver::erosion_cause_name(s.state().erosion[0].cause), "plastic_strain");
+  for (int i = 0; i < 48; ++i) EXPECT_EQ(s.state().blocks[0].stress[i], 0.0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Elform, ErosionSolver, ::testing::Values(1, 2),
                          [](const auto& info) { return "ELFORM" + std::to_string(info.param); });
 
