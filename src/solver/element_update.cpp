@@ -665,10 +665,11 @@ material::CompositeDamageResult composite_point_update(const material::Composite
 // stress with that point's spin. *MAT_054 keeps one set of material axes per element, rotated by
 // the volume-averaged spin (a ply has one orientation; per-point axes would drift apart only by the
 // differences of the point spins, which the B-bar element does not resolve anyway).
-// Erosion (our choice, as LS-DYNA's *MAT_ADD_EROSION default NUMFIP = 1): the element is deleted as
-// soon as one of its points fails, exactly as an ELFORM 1 element whose only point fails; a
-// fully integrated element with one failed point would otherwise keep a stress-free corner that
-// the others must carry, an hourglass-like mechanism. ERODE/TSMIN applies as in ELFORM 1.
+// Erosion, our choice: the element is deleted as soon as one of its points fails (like NUMFIP = 1
+// on *MAT_ADD_EROSION; the manual's rule for a material's own failure in a fully integrated solid
+// could not be confirmed from a source we can cite), exactly as an ELFORM 1 element whose only
+// point fails; keeping it would leave a stress-free corner the other points must carry, a
+// mechanism the element has no hourglass control for. ERODE/TSMIN applies as in ELFORM 1.
 template <MaterialKind M>
 void elform2(const model::Model& model, const model::ElementBlock& blk, BlockState& st, Index begin, Index end,
              const double* __restrict x, const double* __restrict v, double* __restrict f, double dt, ChunkResult& r) {
