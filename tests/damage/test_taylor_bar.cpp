@@ -36,6 +36,9 @@
 //   n k nz = 2 1 27 (216 hexes):  21.78 mm / 6.80 mm / 0.4 s
 //            3 2 40 (840):        21.64    / 7.09    / 3.0 s   <- asserted, coarse
 //            4 3 54 (2160):       21.59    / 7.20    / 14 s    <- asserted, fine
+//            6 4 80 (6720):       21.55    / 7.26    / 99 s, only at TSSFAC 0.6: at 0.9 the run goes
+//                                 unstable at 56 us, at 0.8 a core element on the axis by the face
+//                                 inverts at 88 us (the most crushed elements of the bar)
 //   ELFORM 2:  2 1 27 (216):      21.62    / 7.18    / 2.6 s   <- asserted, against the fine one
 //              3 2 40 (840):      21.56    / 7.23    / 19 s
 // A Richardson fit through the three (h ~ 1/n; orders 1.6 and 1.8) puts the converged values at
