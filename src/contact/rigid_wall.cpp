@@ -7,10 +7,15 @@ namespace plyimpact::contact {
 void RigidWallConstraint::apply(const double* x, const double* v, double* f, const double* mass, double time,
                                 double dt_n1, double dt_next, double dt_prev) {
   const auto& w = wall_;
-  // Work of the previous forces over the last step (second half of the trapezoid comes below).
+  // Work of a force F applied at t^n: F dt^n (v^{n-1/2} + v^{n+1/2}) / 2, with dt^n the step over
+  // which the velocity update applies it (so that it equals the kinetic energy it removes,
+  // m (v^{n+1/2}^2 - v^{n-1/2}^2) / 2, exactly); booked half at each pass. The first half of the
+  // previous pass's forces comes here, with the velocity they produced. (Weighting with dt_prev
+  // instead lost the whole impulse of nodes already on the wall at t = 0, where dt_prev = 0.)
+  (void)dt_prev;
   double work = 0;
   for (std::size_t a = 0; a < active_.size(); ++a)
-    for (int d = 0; d < 3; ++d) work += 0.5 * active_f_[3 * a + d] * v[3 * std::size_t(active_[a]) + d] * dt_prev;
+    for (int d = 0; d < 3; ++d) work += 0.5 * active_f_[3 * a + d] * v[3 * std::size_t(active_[a]) + d] * active_dt_;
   next_active_.clear();
   next_f_.clear();
   normal_force_ = tangential_force_ = 0;
@@ -65,7 +70,7 @@ void RigidWallConstraint::apply(const double* x, const double* v, double* f, con
       for (int d = 0; d < 3; ++d) {
         f[3 * i + d] += F[d];
         resultant_[d] += F[d];
-        work += 0.5 * F[d] * v[3 * i + d] * dt_prev;  // this pass's force over the last step
+        work += 0.5 * F[d] * v[3 * i + d] * dt_n1;  // this pass's force with the velocity before it
       }
       normal_force_ += fn;
       tangential_force_ += ft_mag;
@@ -76,6 +81,7 @@ void RigidWallConstraint::apply(const double* x, const double* v, double* f, con
   energy_ -= work;
   active_.swap(next_active_);
   active_f_.swap(next_f_);
+  active_dt_ = dt_n1;
 }
 
 }  // namespace plyimpact::contact

@@ -20,7 +20,7 @@ class RigidWallConstraint {
   explicit RigidWallConstraint(const model::RigidWall& wall) : wall_(wall) {}
 
   // time: t^{n+1}; dt_n1 = dt^{n+1} (force to velocity), dt_next = dt^{n+3/2}; dt_prev = dt^{n+1/2},
-  // the step that led to x (for the energy of the last step). Adds the wall forces to f.
+  // the step that led to x (unused: the work is weighted with dt_n1). Adds the wall forces to f.
   void apply(const double* x, const double* v, double* f, const double* mass, double time, double dt_n1,
              double dt_next, double dt_prev);
 
@@ -35,6 +35,7 @@ class RigidWallConstraint {
   const model::RigidWall& wall_;
   std::vector<Index> active_;       // nodes held at the last pass
   std::vector<double> active_f_;    // (num active, 3) their wall forces
+  double active_dt_ = 0;            // s, dt^n with which they were applied
   std::vector<Index> next_active_;
   std::vector<double> next_f_;
   double normal_force_ = 0, tangential_force_ = 0, energy_ = 0;

@@ -188,10 +188,6 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
     const auto& part_spec = scene.parts[block.part];
     block.volume0.resize(block.size());
     if (mat.has_axes()) block.orientation.resize(block.size());
-    if (mat.history_size() > 0 && block.elform != 1)
-      throw InputError(at(part_spec.where) << "part '" << part.name << "': " << mat.card
-                                           << " is implemented for ELFORM 1 only so far; found ELFORM "
-                                           << block.elform);
     for (std::size_t e = 0; e < block.size(); ++e) {
       double x[3][8];
       gather_reference(model.X, &block.conn[8 * e], x);

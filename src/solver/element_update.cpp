@@ -6,6 +6,7 @@
 // total Lagrangian, S = C : E and sigma = F S F^T / J, objective and exact for any rotation.
 #include "solver/element_update.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -647,17 +648,63 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
 }
 #undef PLYIMPACT_LANES
 
+// *MAT_054 at one point whose stress is kept in global axes: rotate it into the old material axes
+// Qo (rows a, b, c), the strain increment D dt into the new ones Qn = Qo R^T, update in material
+// axes (engineering shear), rotate back with Qn. The same sequence as the ELFORM 1 lane kernel.
+material::CompositeDamageResult composite_point_update(const material::CompositeDamageParams& p, const double Qo[9],
+                                                       const double Qn[9], const double D[6], double dt,
+                                                       const material::CompositeDamageContext& ctx, double s[6],
+                                                       double* history) {
+  auto to_axes = [](const double* Q, const double t[6], double out[6]) {
+    const double T[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
+    double QT[9];
+    for (int a = 0; a < 3; ++a)
+      for (int j = 0; j < 3; ++j) QT[3 * a + j] = Q[3 * a] * T[j] + Q[3 * a + 1] * T[3 + j] + Q[3 * a + 2] * T[6 + j];
+    auto qtq = [&](int a, int b) { return QT[3 * a] * Q[3 * b] + QT[3 * a + 1] * Q[3 * b + 1] + QT[3 * a + 2] * Q[3 * b + 2]; };
+    out[0] = qtq(0, 0), out[1] = qtq(1, 1), out[2] = qtq(2, 2), out[3] = qtq(0, 1), out[4] = qtq(1, 2), out[5] = qtq(2, 0);
+  };
+  double sm[6], de[6], dm[6];
+  for (int i = 0; i < 6; ++i) de[i] = D[i] * dt;
+  to_axes(Qo, s, sm);
+  to_axes(Qn, de, dm);
+  for (int i = 3; i < 6; ++i) dm[i] *= 2;  // engineering shear
+  const auto res = material::composite_damage_update(p, dm, sm, history, ctx);
+  const double Sm[9] = {sm[0], sm[3], sm[5], sm[3], sm[1], sm[4], sm[5], sm[4], sm[2]};
+  constexpr int kV[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      double sum = 0;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) sum += Qn[3 * a + i] * Sm[3 * a + b] * Qn[3 * b + j];
+      s[kV[i][j]] = sum;
+    }
+  return res;
+}
+
 // ELFORM 2: 2x2x2 Gauss points, selectively reduced (B-bar: the volumetric strain rate of every
 // point is the element mean; for the total-Lagrangian material the F-bar equivalent
 // F_bar = (J_mean / J_gp)^(1/3) F_gp with J_mean = V / V0).
+// Materials with history keep it per point (history row 8 e + g). *MAT_003/024 rotate each point's
+// stress with that point's spin. *MAT_054 keeps one set of material axes per element, rotated by
+// the volume-averaged spin (a ply has one orientation; per-point axes would drift apart only by the
+// differences of the point spins, which the B-bar element does not resolve anyway).
+// Erosion, our choice: the element is deleted as soon as one of its points fails (like NUMFIP = 1
+// on *MAT_ADD_EROSION; the manual's rule for a material's own failure in a fully integrated solid
+// could not be confirmed from a source we can cite), exactly as an ELFORM 1 element whose only
+// point fails; keeping it would leave a stress-free corner the other points must carry, a
+// mechanism the element has no hourglass control for. ERODE/TSMIN applies as in ELFORM 1.
 template <MaterialKind M>
 void elform2(const model::Model& model, const model::ElementBlock& blk, BlockState& st, Index begin, Index end,
              const double* __restrict x, const double* __restrict v, double* __restrict f, double dt, ChunkResult& r) {
   constexpr bool kTotalLagrangian = M == MaterialKind::OrthotropicElastic;
+  constexpr bool kPlastic = M == MaterialKind::Plastic;
+  constexpr bool kComposite = M == MaterialKind::CompositeDamage;
   const model::Material& mat = model.materials[blk.material];
   const double rho0 = mat.density, c = mat.wave_speed;
   const double lambda = mat.iso.lambda, mu = mat.iso.mu;
   const double q1 = blk.q1, q2 = blk.q2;
+  const double erode_tsmin = model.control.erode_tsmin;
+  const std::size_t hsize = std::size_t(mat.history_size());
   const double* X = model.X.data();
   for (Index e = begin; e < end; ++e) {
     const Index* conn = &blk.conn[8 * std::size_t(e)];
@@ -698,9 +745,30 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
       continue;
     }
     trDbar /= V;
+    // The element step comes before the material (MAT_054 TFAIL and ERODE/TSMIN need it).
+    const double dte = element_time_step(V, element::hex8_max_face_area(xe), c, trDbar, q1, q2);
+    if (dt == 0 && !st.initial_dt.empty()) st.initial_dt[e] = dte;
+    double Qo[9] = {}, Qn[9] = {};
+    material::CompositeDamageContext ctx;
+    if constexpr (kComposite) {
+      double Wbar[9] = {};
+      for (int g = 0; g < 8; ++g) {
+        double D[6], W[9];
+        split_rate(Lg[g], D, W);
+        for (int i = 0; i < 9; ++i) Wbar[i] += detj[g] * W[i] / V;
+      }
+      double R[9];
+      hughes_winget(Wbar, dt, R);
+      std::copy_n(&st.axes[9 * std::size_t(e)], 9, Qo);
+      for (int a = 0; a < 3; ++a)
+        for (int j = 0; j < 3; ++j) Qn[3 * a + j] = Qo[3 * a] * R[3 * j] + Qo[3 * a + 1] * R[3 * j + 1] + Qo[3 * a + 2] * R[3 * j + 2];
+      ctx.element_dt = dt > 0 ? dte : 0.0;
+      ctx.initial_dt = st.initial_dt[e];
+    }
 
     double fe[3][8] = {};
     double dIE = 0;
+    int erode_cause = 0;  // > 0: a point failed (ErosionCause)
     for (int g = 0; g < 8; ++g) {
       double D[6], W[9];
       split_rate(Lg[g], D, W);
@@ -709,6 +777,7 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
       D[1] += vol_correction;
       D[2] += vol_correction;
       double* s = &st.stress[6 * (8 * std::size_t(e) + g)];
+      double* h = kPlastic || kComposite ? &st.history[(8 * std::size_t(e) + g) * hsize] : nullptr;
       const double s_old[6] = {s[0], s[1], s[2], s[3], s[4], s[5]};
       if constexpr (kTotalLagrangian) {
         double Finv[9], F[9];
@@ -717,6 +786,14 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
         const double scale = std::cbrt(Jbar / Jg);
         for (double& fij : F) fij *= scale;
         total_lagrangian_stress(F, Jbar, model.orientations[blk.orientation[e]].c_global.data(), s);
+      } else if constexpr (kPlastic) {
+        double R[9];
+        hughes_winget(W, dt, R);
+        const auto res = material::plasticity_update(mat.plastic, R, D, dt, s, h);
+        if (res.failed && erode_cause == 0) erode_cause = int(ErosionCause::PlasticStrain);
+      } else if constexpr (kComposite) {
+        const auto res = composite_point_update(mat.composite, Qo, Qn, D, dt, ctx, s, h);
+        if (res.erode && erode_cause == 0) erode_cause = int(ErosionCause::CompositeBase) + res.cause;
       } else {
         double R[9];
         hughes_winget(W, dt, R);
@@ -734,19 +811,28 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
         fe[2][k] -= detj[g] * (s[5] * bx + s[4] * by + s[2] * bz + cz);
       }
     }
+    if constexpr (kComposite) std::copy_n(Qn, 9, &st.axes[9 * std::size_t(e)]);
+    if (!(dte > 0) || !std::isfinite(dIE)) {
+      record_bad(r, blk.element_id[e], V, true);
+      continue;
+    }
+    if (erode_tsmin > 0 && dt > 0 && dte < erode_tsmin) erode_cause = int(ErosionCause::TimeStep);
     st.internal_energy[e] += dIE;
     r.internal_energy += dIE;
+    if (erode_cause > 0) {
+      // Eroded, as in ELFORM 1: no stress and no force from now on, the energy it holds stays in
+      // the totals and is reported as eroded, its mass stays on the nodes.
+      std::fill_n(&st.stress[6 * 8 * std::size_t(e)], 6 * 8, 0.0);
+      r.eroded.emplace_back(blk.element_id[e], erode_cause);
+      r.eroded_energy += st.internal_energy[e] + st.hourglass_energy[e];
+      continue;
+    }
     const double q = bulk_viscosity(rho, V, c, trDbar, q1, q2);
     r.bulk_viscous_energy += -0.5 * (st.bulk_q[e] + q) * trDbar * V * dt;  // trapezoid, as in ELFORM 1
     st.bulk_q[e] = q;
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 8; ++k) fe[i][k] += q * V * bbar[i][k];
     scatter(f, conn, fe);
-    const double dte = element_time_step(V, element::hex8_max_face_area(xe), c, trDbar, q1, q2);
-    if (!(dte > 0) || !std::isfinite(dIE)) {
-      record_bad(r, blk.element_id[e], V, true);
-      continue;
-    }
     record_dt(r, blk.element_id[e], dte);
   }
 }

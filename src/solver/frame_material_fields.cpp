@@ -1,5 +1,6 @@
 #include "solver/frame_material_fields.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "material/composite_damage.hpp"
@@ -29,16 +30,32 @@ void add_material_fields(const Solver& solver, output::Frame& frame) {
     const auto& st = state.blocks[b];
     for (std::size_t e = 0; e < blk.size(); ++e) {
       alive.values.push_back(solver.element_alive(int(b), Index(e)) ? 1 : 0);
-      if (any_plastic)
-        plastic.values.push_back(kind == model::MaterialKind::Plastic
-                                     ? st.history[e * material::kPlasticityHistory]  // one point (ELFORM 1)
-                                     : 0.0);
+      // ELFORM 2 has eight points: the plastic strain is their mean (as LS-DYNA reports a solid's);
+      // the damage fields are those of the most critical point (flags, XT, XC: the smallest; the
+      // criteria, transverse-shear damage, crashfront and erosion cause: the largest).
+      const std::size_t points = std::size_t(blk.points());
+      if (any_plastic) {
+        double ep = 0;
+        if (kind == model::MaterialKind::Plastic)
+          for (std::size_t g = 0; g < points; ++g) ep += st.history[(e * points + g) * material::kPlasticityHistory];
+        plastic.values.push_back(ep / double(points));
+      }
       if (any_damage) {
         double values[material::kCompositeDamageOutputs];
-        if (kind == model::MaterialKind::CompositeDamage)
-          material::composite_damage_output_values(&st.history[e * material::kCompositeDamageHistory], values);
-        else
+        if (kind == model::MaterialKind::CompositeDamage) {
+          material::composite_damage_output_values(&st.history[e * points * material::kCompositeDamageHistory], values);
+          for (std::size_t g = 1; g < points; ++g) {
+            double other[material::kCompositeDamageOutputs];
+            material::composite_damage_output_values(
+                &st.history[(e * points + g) * material::kCompositeDamageHistory], other);
+            for (int i = 0; i < material::kCompositeDamageOutputs; ++i) {
+              const bool smallest = i < 4 || i == 8 || i == 9;  // e_f e_c e_m e_d, XT, XC
+              values[i] = smallest ? std::min(values[i], other[i]) : std::max(values[i], other[i]);
+            }
+          }
+        } else {
           std::fill(values, values + material::kCompositeDamageOutputs, nan);
+        }
         for (int i = 0; i < material::kCompositeDamageOutputs; ++i) damage[i].values.push_back(values[i]);
       }
     }

@@ -450,8 +450,10 @@ void Solver::mark_crashfront(const std::vector<Index>& eroded) {
         for (Index p = node_elements_start_[node]; p < node_elements_start_[node + 1]; ++p) {
           const auto [nb, ne] = node_elements_[p];
           if (model_.materials[model_.blocks[nb].material].kind != model::MaterialKind::CompositeDamage) continue;
-          state_.blocks[nb].history[std::size_t(ne) * material::kCompositeDamageHistory +
-                                    material::composite_history::kCrashfront] = 1.0;
+          const std::size_t points = std::size_t(model_.blocks[nb].points());
+          for (std::size_t g = 0; g < points; ++g)  // every integration point of the neighbour
+            state_.blocks[nb].history[(std::size_t(ne) * points + g) * material::kCompositeDamageHistory +
+                                      material::composite_history::kCrashfront] = 1.0;
         }
       }
     }
