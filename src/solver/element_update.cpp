@@ -170,6 +170,39 @@ inline void record_dt(ChunkResult& r, Index id, double dte) {
   }
 }
 
+// *MAT_054 at one point whose stress is kept in global axes: rotate it into the old material axes
+// Qo (rows a, b, c), the strain increment D dt into the new ones Qn = Qo R^T, update in material
+// axes (engineering shear), rotate back with Qn. Used by the ELFORM 1 lanes and the ELFORM 2 points.
+material::CompositeDamageResult composite_point_update(const material::CompositeDamageParams& p, const double Qo[9],
+                                                       const double Qn[9], const double D[6], double dt,
+                                                       const material::CompositeDamageContext& ctx, double s[6],
+                                                       double* history) {
+  auto to_axes = [](const double* Q, const double t[6], double out[6]) {
+    const double T[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
+    double QT[9];
+    for (int a = 0; a < 3; ++a)
+      for (int j = 0; j < 3; ++j) QT[3 * a + j] = Q[3 * a] * T[j] + Q[3 * a + 1] * T[3 + j] + Q[3 * a + 2] * T[6 + j];
+    auto qtq = [&](int a, int b) { return QT[3 * a] * Q[3 * b] + QT[3 * a + 1] * Q[3 * b + 1] + QT[3 * a + 2] * Q[3 * b + 2]; };
+    out[0] = qtq(0, 0), out[1] = qtq(1, 1), out[2] = qtq(2, 2), out[3] = qtq(0, 1), out[4] = qtq(1, 2), out[5] = qtq(2, 0);
+  };
+  double sm[6], de[6], dm[6];
+  for (int i = 0; i < 6; ++i) de[i] = D[i] * dt;
+  to_axes(Qo, s, sm);
+  to_axes(Qn, de, dm);
+  for (int i = 3; i < 6; ++i) dm[i] *= 2;  // engineering shear
+  const auto res = material::composite_damage_update(p, dm, sm, history, ctx);
+  const double Sm[9] = {sm[0], sm[3], sm[5], sm[3], sm[1], sm[4], sm[5], sm[4], sm[2]};
+  constexpr int kV[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j) {
+      double sum = 0;
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) sum += Qn[3 * a + i] * Sm[3 * a + b] * Qn[3 * b + j];
+      s[kV[i][j]] = sum;
+    }
+  return res;
+}
+
 // ELFORM 1: one-point integration with Flanagan-Belytschko hourglass control. Elements are
 // processed kLanes at a time: every local quantity is an array over the lanes and every statement a
 // loop over them, which the compiler turns into SIMD instructions (8 doubles per AVX-512 register).
@@ -434,34 +467,14 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
         double Qn[9];
         for (int a = 0; a < 3; ++a)
           for (int j = 0; j < 3; ++j) Qn[3 * a + j] = Qo[3 * a] * R[3 * j][l] + Qo[3 * a + 1] * R[3 * j + 1][l] + Qo[3 * a + 2] * R[3 * j + 2][l];
-        auto to_axes = [](const double* Q, const double t[6], double out[6]) {
-          const double T[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
-          double QT[9];
-          for (int a = 0; a < 3; ++a)
-            for (int j = 0; j < 3; ++j) QT[3 * a + j] = Q[3 * a] * T[j] + Q[3 * a + 1] * T[3 + j] + Q[3 * a + 2] * T[6 + j];
-          auto qtq = [&](int a, int b) { return QT[3 * a] * Q[3 * b] + QT[3 * a + 1] * Q[3 * b + 1] + QT[3 * a + 2] * Q[3 * b + 2]; };
-          out[0] = qtq(0, 0), out[1] = qtq(1, 1), out[2] = qtq(2, 2), out[3] = qtq(0, 1), out[4] = qtq(1, 2), out[5] = qtq(2, 0);
-        };
-        double so[6], sm[6], de[6], dm[6];
-        for (int i = 0; i < 6; ++i) so[i] = s_old[i][l], de[i] = D[i][l] * dt;
-        to_axes(Qo, so, sm);
-        to_axes(Qn, de, dm);
-        for (int i = 3; i < 6; ++i) dm[i] *= 2;  // engineering shear
+        double sl[6], Dl[6];
+        for (int i = 0; i < 6; ++i) sl[i] = s_old[i][l], Dl[i] = D[i][l];
         material::CompositeDamageContext ctx;
         ctx.element_dt = dt > 0 ? dte[l] : 0.0;
         ctx.initial_dt = st.initial_dt[e];
-        const auto res = material::composite_damage_update(
-            mat.composite, dm, sm, &st.history[std::size_t(e) * material::kCompositeDamageHistory], ctx);
-        // Back to global axes: sigma = Q^T sm Q.
-        const double Sm[9] = {sm[0], sm[3], sm[5], sm[3], sm[1], sm[4], sm[5], sm[4], sm[2]};
-        for (int i = 0; i < 3; ++i)
-          for (int j = i; j < 3; ++j) {
-            double sum = 0;
-            for (int a = 0; a < 3; ++a)
-              for (int b = 0; b < 3; ++b) sum += Qn[3 * a + i] * Sm[3 * a + b] * Qn[3 * b + j];
-            constexpr int kV[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
-            s[kV[i][j]][l] = sum;
-          }
+        const auto res = composite_point_update(mat.composite, Qo, Qn, Dl, dt, ctx, sl,
+                                                &st.history[std::size_t(e) * material::kCompositeDamageHistory]);
+        for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
         for (int i = 0; i < 9; ++i) Qnew[i][l] = Qn[i];
         if (res.erode) erode_cause[l] = int(ErosionCause::CompositeBase) + res.cause;
       }
@@ -647,39 +660,6 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
   }
 }
 #undef PLYIMPACT_LANES
-
-// *MAT_054 at one point whose stress is kept in global axes: rotate it into the old material axes
-// Qo (rows a, b, c), the strain increment D dt into the new ones Qn = Qo R^T, update in material
-// axes (engineering shear), rotate back with Qn. The same sequence as the ELFORM 1 lane kernel.
-material::CompositeDamageResult composite_point_update(const material::CompositeDamageParams& p, const double Qo[9],
-                                                       const double Qn[9], const double D[6], double dt,
-                                                       const material::CompositeDamageContext& ctx, double s[6],
-                                                       double* history) {
-  auto to_axes = [](const double* Q, const double t[6], double out[6]) {
-    const double T[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
-    double QT[9];
-    for (int a = 0; a < 3; ++a)
-      for (int j = 0; j < 3; ++j) QT[3 * a + j] = Q[3 * a] * T[j] + Q[3 * a + 1] * T[3 + j] + Q[3 * a + 2] * T[6 + j];
-    auto qtq = [&](int a, int b) { return QT[3 * a] * Q[3 * b] + QT[3 * a + 1] * Q[3 * b + 1] + QT[3 * a + 2] * Q[3 * b + 2]; };
-    out[0] = qtq(0, 0), out[1] = qtq(1, 1), out[2] = qtq(2, 2), out[3] = qtq(0, 1), out[4] = qtq(1, 2), out[5] = qtq(2, 0);
-  };
-  double sm[6], de[6], dm[6];
-  for (int i = 0; i < 6; ++i) de[i] = D[i] * dt;
-  to_axes(Qo, s, sm);
-  to_axes(Qn, de, dm);
-  for (int i = 3; i < 6; ++i) dm[i] *= 2;  // engineering shear
-  const auto res = material::composite_damage_update(p, dm, sm, history, ctx);
-  const double Sm[9] = {sm[0], sm[3], sm[5], sm[3], sm[1], sm[4], sm[5], sm[4], sm[2]};
-  constexpr int kV[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) {
-      double sum = 0;
-      for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b) sum += Qn[3 * a + i] * Sm[3 * a + b] * Qn[3 * b + j];
-      s[kV[i][j]] = sum;
-    }
-  return res;
-}
 
 // ELFORM 2: 2x2x2 Gauss points, selectively reduced (B-bar: the volumetric strain rate of every
 // point is the element mean; for the total-Lagrangian material the F-bar equivalent
