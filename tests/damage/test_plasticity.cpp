@@ -117,8 +117,9 @@ TEST(Mat024, StressFollowsTheHardeningCurve) {
   bool failed = false;
   for (int n = 0; n < 20000 && !failed; ++n) {
     const auto r = uniaxial_step(p, pt, 1.0, 1e-5);
-    if (r.plastic_increment > 0)
+    if (r.plastic_increment > 0) {
       ASSERT_NEAR(pt.stress[0], material::yield_stress(p, pt.history[0]), 1e-6 * pt.stress[0]);
+    }
     failed = r.failed;
   }
   EXPECT_TRUE(failed);                                // FAIL = 0.15 reached

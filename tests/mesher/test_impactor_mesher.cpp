@@ -100,8 +100,9 @@ TEST(ImpactorMesher, DeformableSphereCountsJacobiansAndSeparateBody) {
   // Separate body: the plate has 3 x 3 x 3 nodes and the impactor's come after them, unshared.
   EXPECT_EQ(r.plate_nodes, 27u);
   for (std::size_t e = 0; e < m.num_elements(); ++e)
-    if (m.element_part[e] != part_of(s))
+    if (m.element_part[e] != part_of(s)) {
       for (int c = 0; c < 8; ++c) EXPECT_LT(m.hex[8 * e + c], 27);
+    }
   EXPECT_EQ(m.element_ply.size(), m.num_elements());
   // The surface maps onto mesh nodes with identical coordinates, all on the sphere (1e-9 R: gmsh
   // places them on the exact sphere up to round-off).
@@ -200,7 +201,9 @@ TEST_P(ImpactorShapes, BlockingVolumeAndMassProperties) {
   // Measured equal to the elements' volume to 10 digits; 1e-6 leaves room for round-off only.
   EXPECT_NEAR(r.surface_volume, r.volume, 1e-6 * r.volume);
   const double exact = c.exact_volume * 1e-9;
-  if (c.faceted_volume > 0) EXPECT_NEAR(r.volume, c.faceted_volume * 1e-9, 1e-12 * exact);
+  if (c.faceted_volume > 0) {
+    EXPECT_NEAR(r.volume, c.faceted_volume * 1e-9, 1e-12 * exact);
+  }
   // Faceting of the curved shapes at N = 4: below 1.1 / N^2 (sphere: 0.067, see the convergence test).
   EXPECT_LE(r.volume, exact * (1 + 1e-12));
   EXPECT_GT(r.volume, exact * (1 - 1.1 / 16));
