@@ -1,6 +1,7 @@
 #include "mesh/gmsh_session.hpp"
 
 #include <gmsh.h>
+#include <omp.h>
 
 #include <cstdlib>
 #include <vector>
@@ -12,7 +13,12 @@ namespace {
 struct GmshProcess {
   bool verbose = false;
   GmshProcess() {
+    // gmsh::initialize applies its General.NumThreads (default 1) through omp_set_num_threads,
+    // which would make every later OpenMP region of the process (the solver's element pass) serial
+    // whatever OMP_NUM_THREADS or control.threads say. Meshing is serial anyway: put it back.
+    const int threads = omp_get_max_threads();
     gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);  // never main's argv (G3)
+    omp_set_num_threads(threads);
     const char* env = std::getenv("PLYIMPACT_GMSH_VERBOSE");
     verbose = env && *env && std::string(env) != "0";
     gmsh::option::setNumber("General.Terminal", verbose ? 1 : 0);

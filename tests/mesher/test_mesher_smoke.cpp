@@ -7,6 +7,8 @@
 #include <map>
 #include <numbers>
 
+#include <omp.h>
+
 #include "scene_cards.hpp"
 #include "config/scene_loader.hpp"
 #include "mesh/scene_mesher.hpp"
@@ -109,4 +111,19 @@ initial_velocity:
     EXPECT_NEAR(v[3 * n + 2], -2.0, 1e-9);
   }
   EXPECT_GT(checked, 100u);
+}
+
+// gmsh::initialize sets OpenMP's thread count to its General.NumThreads (1); the session must put
+// back what the process had, or the solver of every laminate scene runs on one thread. gmsh is
+// initialised once per process (first mesh), and each test runs in its own process (ctest).
+TEST(MesherSmoke, MeshingKeepsTheOpenMpThreadCount) {
+  omp_set_num_threads(3);  // not 1 (gmsh's default) and not the test environment's 1
+  const config::Scene scene = config::load_scene_from_string(R"(units: mm-t-s-MPa
+control: {termination_time: 1.0e-5}
+)" + std::string(test::kPlyCards) + R"(laminate: {length: 10, width: 10, ply_thickness: 0.25, stacking: "[0/90]", material: ply, section: s,
+           element_size: 5, supports: {clamp: {clamped: [x0]}}}
+)", "smoke_threads.yaml");
+  const mesh::Mesh m = mesh::mesh_scene(scene);
+  EXPECT_EQ(m.num_elements(), 8u);
+  EXPECT_EQ(omp_get_max_threads(), 3);
 }
