@@ -88,8 +88,13 @@ class PenaltyContact {
   // "penetration" is a node beside an edge projecting onto a side face, not a real one).
   long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth) const;
   void estimate_stiffness_range();
-  void update_node_normals(const double* x);
-  void refresh_segments(const double* x);  // spheres and frames at x
+  // Search data of segment s at x (seg_geo_): bilinear coefficients, bounding sphere, normal bound.
+  void refresh_segment(std::size_t s, const double* x);
+  // Per-cycle refresh of the segments some node can reach (refresh_segs_) and the node normals of
+  // the nodes that have candidates; all segments and nodes when `all`.
+  void refresh(const double* x, bool all);
+  // After a sort: each slave node's candidate list (segments it can reach before the next sort).
+  void build_candidates(const double* x);
 
   const model::Model& model_;
   model::Contact def_;
@@ -105,8 +110,13 @@ class PenaltyContact {
   std::vector<double> seg_mass_;   // SOFT 2 segment mass (half the element's)
   std::vector<double> seg_node_mass_;  // mean nodal mass of its nodes
   std::vector<double> seg_depth_;  // release depth, m
-  std::vector<double> seg_sphere_; // (S, 4) centre and radius, refreshed every pass
-  std::vector<double> seg_frame_;  // (S, 4) unit diagonal normal, largest corner-normal deviation
+  // Hot per-segment record, refreshed every pass, one 128-byte record per segment (a candidate's
+  // tests read it contiguously instead of gathering four nodes): [0..2] centre c, [3] bounding
+  // radius, [4..6] a1, [7] bound of the unit normal's deviation from the centre normal,
+  // [8..10] a2, [11] 1 / |a1 x a2|, [12..14] a3 (geometry.hpp coefficient form), [15] unused.
+  static constexpr std::size_t kGeo = 16;
+  std::vector<double> seg_geo_;    // (S, kGeo)
+  std::vector<Index> seg_local_;   // (S, 4) union index of each segment node
   // Slave nodes.
   std::vector<Index> sn_node_;
   std::vector<char> sn_side_;
@@ -116,6 +126,13 @@ class PenaltyContact {
   std::vector<double> sn_normal_;  // (N, 3) area-weighted outward normal of the node's own surface
   std::vector<Index> seg_slave_;   // (S, 4) slave index of each segment node on the segment's side
   std::vector<long> sn_segment_;   // segment the node was in contact with at the last pass, -1
+  // Incremental search (LS-DYNA-style: between bucket sorts a node only looks at the segments it
+  // can reach): candidates of slave node i are cand_[cand_start_[i] .. cand_start_[i + 1]), built
+  // at each sort from its bucket, in bucket order.
+  std::vector<Index> cand_start_, cand_;
+  std::vector<Index> own_start_, own_segs_;  // (CSR over slave nodes) segments of the node's own side
+  std::vector<char> seg_flag_;     // (S) 1: some node's candidate, 2: adjoins a node with candidates
+  std::vector<Index> refresh_segs_;  // segments with a flag, ascending
   // Nodes receiving forces (union of both sides), their forces and positions at the last sort.
   std::vector<Index> union_nodes_;
   std::vector<Index> local_of_;    // (num_nodes) -> index in union_nodes_, -1
