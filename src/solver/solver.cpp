@@ -109,25 +109,20 @@ Solver::Solver(const model::Model& model) : model_(model) {
     initial_penetrations_.push_back(contacts_.back().resolve_initial_penetrations(state_.x));
   }
   for (const auto& w : model.rigid_walls) walls_.emplace_back(w);
-  double dt_contact = std::numeric_limits<double>::infinity();
-  std::string stiffest;
-  for (const auto& c : contacts_)
-    if (c.stable_step() < dt_contact) {
-      dt_contact = c.stable_step();
-      stiffest = c.name();
-    }
-  if (std::isfinite(dt_contact)) {
-    state_.dt_contact = dt_contact;
+  update_contact_step();
+  if (state_.dt_contact > 0) {
     const double dt_elements = state_.dt_next_half;
-    if (model.control.tssfac * dt_contact < dt_elements) {
-      state_.dt_next_half = model.control.tssfac * dt_contact;
-      state_.dt_contact_controls = true;
-      state_.dt_initial = state_.dt_next_half;
-      warnings_.push_back(msg() << "contact '" << stiffest << "': the stiffest penalty spring's frequency exceeds the "
-                                << "element step by a factor " << dt_elements / state_.dt_next_half
-                                << "; the time step is reduced from " << dt_elements << " s to "
-                                << state_.dt_next_half << " s (lower SLSFAC/SFS/SFM or use SOFT 1)");
-    }
+    state_.dt_next_half = model.control.tssfac * combined_step(dt_elements / model.control.tssfac, state_.dt_contact);
+    state_.dt_contact_controls = state_.dt_contact < dt_elements / model.control.tssfac;
+    state_.dt_initial = state_.dt_next_half;
+    if (state_.dt_contact_controls)
+      warnings_.push_back(msg() << "contact '" << stiffest_contact_ << "': the contact frequency exceeds the element "
+                                << "step by " << dt_elements / model.control.tssfac / state_.dt_contact
+                                << " x (stiffest penalty spring 2/omega = " << state_.dt_contact
+                                << " s, elements " << dt_elements / model.control.tssfac
+                                << " s); the combined stable step reduces the time step from " << dt_elements
+                                << " s to " << state_.dt_next_half
+                                << " s (TSSFAC applied). Lower SLSFAC/SFS/SFM or use SOFT 1 to keep the element step");
   }
   external_and_contact_forces(0.0);
 
@@ -204,8 +199,42 @@ void Solver::delete_elements(const std::vector<Index>& ids) {
       if (e > start) ranges.push_back({start, e});
     }
   }
+  bool rebuilt = false;
   for (auto& c : contacts_)
-    if (c.eroding()) c.rebuild(alive_, state_.x);
+    if (c.eroding()) {
+      c.rebuild(alive_, state_.x);
+      rebuilt = true;
+    }
+  if (rebuilt) update_contact_step();  // new faces, new springs
+}
+
+double Solver::combined_step(double dt_element, double dt_contact) {
+  // The element and contact stiffnesses add: K = K_e + K_c. The highest frequency of the
+  // mass-normalised sum is at most the sum of the highest of each (Weyl's inequality for symmetric
+  // matrices, lambda_max(A + B) <= lambda_max(A) + lambda_max(B)), so with omega_e = 2 / dt_e and
+  // omega_c = 2 / dt_c the central-difference limit dt = 2 / omega becomes
+  //   dt = 1 / sqrt(1 / dt_e^2 + 1 / dt_c^2).
+  // This is Radioss's nodal-step idea (the contact stiffness added to the equivalent nodal
+  // stiffness, Altair Radioss help "Nodal Time Step") applied to the two global bounds; LS-DYNA
+  // instead leaves the contact springs out of the step and only prints the step they would need
+  // ("The LS-DYNA time step size should not exceed ... to avoid contact instabilities", see
+  // blog.d3view.com/?p=2183). Taking min(dt_e, dt_c) is not enough: with dt_c = dt_e the combined
+  // frequency is sqrt(2) omega_e, unstable at TSSFAC 0.9. The bound is global (stiffest spring with
+  // the smallest element) and so conservative when they are in different places.
+  if (!(dt_contact > 0) || !std::isfinite(dt_contact)) return dt_element;
+  const double r = dt_element / dt_contact;
+  return dt_element / std::sqrt(1.0 + r * r);
+}
+
+void Solver::update_contact_step() {
+  state_.dt_contact = 0;
+  double dt_contact = std::numeric_limits<double>::infinity();
+  for (const auto& c : contacts_)
+    if (c.stable_step() < dt_contact) {
+      dt_contact = c.stable_step();
+      stiffest_contact_ = c.name();
+    }
+  if (std::isfinite(dt_contact)) state_.dt_contact = dt_contact;
 }
 
 void Solver::step() {
@@ -376,8 +405,9 @@ void Solver::check_after_pass(double dt_used) {
     if (s.eroded_elements > 0 && s.dt_next_half > 0) return;
     throw RunError("the model has no deformable element, so no stable time step exists");
   }
+  // Combined element and contact step (combined_step); "controls": the contact frequency is the higher.
   s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < total.dt_min;
-  s.dt_next_half = model_.control.tssfac * (s.dt_contact_controls ? s.dt_contact : total.dt_min);
+  s.dt_next_half = model_.control.tssfac * combined_step(total.dt_min, s.dt_contact);
   s.dt_element = total.dt_element;
   if (s.dt_initial > 0 && s.dt_next_half < model_.control.dt_min_ratio * s.dt_initial)
     throw RunError(msg() << "time step collapsed to " << s.dt_next_half << " s, below " << model_.control.dt_min_ratio
