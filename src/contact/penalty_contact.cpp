@@ -177,6 +177,12 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   const std::size_t U = union_nodes_.size();
   fc_.assign(3 * U, 0.0);
   fc_prev_.assign(3 * U, 0.0);
+  union_row_.assign(U, 0.0);
+  union_inv_mass_.resize(U);
+  for (std::size_t u = 0; u < U; ++u) {
+    const Index n = union_nodes_[u];
+    union_inv_mass_[u] = !node_rigid_[n] && model_.mass[n] > 0 ? 1 / model_.mass[n] : 0.0;
+  }
   x_sort_.assign(3 * U, 0.0);
   for (const auto& [node, f] : old_forces)
     if (local_of_[node] >= 0)
@@ -575,13 +581,14 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   std::fill(fc_.begin(), fc_.end(), 0.0);
   forces_ = ContactForces{};
   const bool friction = spec.FS > 0 || spec.FD > 0;
-  double friction_work = 0;
+  double friction_work = 0, entry_correction = 0;
   const double v_max = std::sqrt(v_max2);
   for (std::size_t i = 0; i < N; ++i) {
     Projection pr;
     const double* vi = &v[3 * std::size_t(sn_node_[i])];
     const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max));
     double* ft = &sn_ft_[3 * i];
+    const bool entering = sn_segment_[i] < 0;
     sn_segment_[i] = s;
     if (s < 0) {
       ft[0] = ft[1] = ft[2] = 0;
@@ -624,19 +631,36 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       friction_work -= dot3(ft, vt) * dt;
       forces_.tangential += std::sqrt(dot3(ft, ft));
     }
+    // Energy of a spring that engages in this step: the trapezoid below books 0.5 fn vn dt, the
+    // force times the whole step's normal motion, but the node only crossed the surface part of
+    // the way; the spring's energy is 0.5 k g^2 = -0.5 fn g. The difference grows as k (vn dt)^2
+    // and with a stiff penalty exceeds the impact energy (ContactStep test).
+    if (entering) entry_correction += 0.5 * fn * (g - vn * dt);
     forces_.normal += fn;
     ++forces_.active;
-    double* fs = &fc_[3 * std::size_t(sn_local_[i])];
+    const Index ui = sn_local_[i];
+    double* fs = &fc_[3 * std::size_t(ui)];
     for (int d = 0; d < 3; ++d) fs[d] += F[d];
     const Index* ql = &seg_local_[4 * std::size_t(s)];
     for (int a = 0; a < 4; ++a) {
       double* fm = &fc_[3 * std::size_t(ql[a])];
       for (int d = 0; d < 3; ++d) fm[d] -= pr.N[a] * F[d];
     }
+    // Stability: the spring is k b b^T (x) D, b = (1, -N_1..-N_4) over the node and the segment
+    // nodes, D <= k I (normal spring; the friction return map never exceeds the same k
+    // tangentially). Gershgorin on M^-1 K: row j gets k |b_j| sum_l |b_l| over deformable nodes
+    // (rigid nodes move with their body, whose mass is far larger; their rows and columns drop out).
+    double sum_b = union_inv_mass_[std::size_t(ui)] > 0 ? 1.0 : 0.0;
+    for (int a = 0; a < 4; ++a)
+      if (union_inv_mass_[std::size_t(ql[a])] > 0) sum_b += pr.N[a];
+    union_row_[std::size_t(ui)] += k * sum_b;
+    for (int a = 0; a < 4; ++a) union_row_[std::size_t(ql[a])] += k * pr.N[a] * sum_b;
   }
   // Scatter, energy (trapezoid: the step moved the nodes by dt v) and side-A resultant.
-  double work = 0;
+  double work = 0, omega2 = 0;
   for (std::size_t u = 0; u < U; ++u) {
+    omega2 = std::max(omega2, union_row_[u] * union_inv_mass_[u]);
+    union_row_[u] = 0;
     const std::size_t node = std::size_t(union_nodes_[u]);
     for (int d = 0; d < 3; ++d) {
       const double fu = fc_[3 * u + d];
@@ -645,8 +669,9 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       if (union_side_a_[u]) forces_.resultant[d] += fu;
     }
   }
-  energy_ -= work;
+  energy_ -= work + entry_correction;
   friction_energy_ += friction_work;
+  dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
   fc_prev_.swap(fc_);
   std::copy(fc_prev_.begin(), fc_prev_.end(), fc_.begin());  // fc_ keeps the last forces for output
 }

@@ -74,8 +74,13 @@ class PenaltyContact {
   std::size_t num_slave_nodes() const { return sn_node_.size(); }
   double stiffness_min() const { return k_min_; }   // N/m over possible node-segment pairs
   double stiffness_max() const { return k_max_; }
-  // Stable step of the stiffest node-segment spring, 2 / omega (no TSSFAC).
+  // A priori stable step of the stiffest single node-segment spring that can form, 2 / omega (no
+  // TSSFAC): for `check` and the set-up warning.
   double stable_step() const { return dt_stable_; }
+  // Stable step of the springs active in the last pass, 2 / omega with omega^2 the Gershgorin bound
+  // of M^-1 K_c (every spring touching a node summed; the solver combines it with the element step).
+  // Infinity when no spring is active.
+  double spring_stable_step() const { return dt_springs_; }
   long sorts() const { return sorts_; }
 
  private:
@@ -138,6 +143,8 @@ class PenaltyContact {
   std::vector<Index> local_of_;    // (num_nodes) -> index in union_nodes_, -1
   std::vector<char> union_side_a_;
   std::vector<double> fc_, fc_prev_, x_sort_;
+  std::vector<double> union_inv_mass_;  // 1 / m of deformable nodes, 0 for rigid or massless ones
+  std::vector<double> union_row_;       // Gershgorin row sums of the last pass's springs (zeroed after use)
   std::vector<Index> sn_local_;    // slave node -> union index
   BucketGrid grid_[2];                  // per side (single surface: [0] only)
   std::vector<Index> side_segs_[2];     // grid item -> segment
@@ -148,6 +155,7 @@ class PenaltyContact {
   double energy_ = 0, friction_energy_ = 0;
   ContactForces forces_;
   double k_min_ = 0, k_max_ = 0, dt_stable_ = std::numeric_limits<double>::infinity();
+  double dt_springs_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace plyimpact::contact

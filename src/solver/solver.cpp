@@ -109,20 +109,29 @@ Solver::Solver(const model::Model& model) : model_(model) {
     initial_penetrations_.push_back(contacts_.back().resolve_initial_penetrations(state_.x));
   }
   for (const auto& w : model.rigid_walls) walls_.emplace_back(w);
-  update_contact_step();
-  if (state_.dt_contact > 0) {
-    const double dt_elements = state_.dt_next_half;
-    state_.dt_next_half = model.control.tssfac * combined_step(dt_elements / model.control.tssfac, state_.dt_contact);
-    state_.dt_contact_controls = state_.dt_contact < dt_elements / model.control.tssfac;
-    state_.dt_initial = state_.dt_next_half;
-    if (state_.dt_contact_controls)
-      warnings_.push_back(msg() << "contact '" << stiffest_contact_ << "': the contact frequency exceeds the element "
-                                << "step by " << dt_elements / model.control.tssfac / state_.dt_contact
-                                << " x (stiffest penalty spring 2/omega = " << state_.dt_contact
-                                << " s, elements " << dt_elements / model.control.tssfac
-                                << " s); the combined stable step reduces the time step from " << dt_elements
-                                << " s to " << state_.dt_next_half
-                                << " s (TSSFAC applied). Lower SLSFAC/SFS/SFM or use SOFT 1 to keep the element step");
+  // A priori check of the stiffest spring that can form (the run itself combines the element step
+  // with the springs actually active, update_contact_step): warn when it would dominate the step.
+  double dt_apriori = std::numeric_limits<double>::infinity();
+  std::string stiffest;
+  for (const auto& c : contacts_)
+    if (c.stable_step() < dt_apriori) {
+      dt_apriori = c.stable_step();
+      stiffest = c.name();
+    }
+  if (std::isfinite(dt_apriori)) {
+    const double dt_e = dt_element_crit_, tssfac = model.control.tssfac;
+    const double dt_combined = tssfac * combined_step(dt_e, dt_apriori);
+    // Stiffer than the elements: the springs' step applies from the start, not only once they act,
+    // so the first contact step cannot drive a node a whole element step deep into a stiff spring
+    // (0.5 k g^2 created from nothing, more than the impact energy at 100x the default penalty).
+    if (dt_apriori < dt_e) dt_contact_floor_ = dt_apriori;
+    if (dt_apriori < dt_e)
+      warnings_.push_back(msg() << "contact '" << stiffest << "': the contact frequency exceeds the element step by "
+                                << dt_e / dt_apriori << " x (stiffest penalty spring 2/omega = " << dt_apriori
+                                << " s, elements " << dt_e << " s); while it is in contact the combined stable "
+                                << "step reduces the time step from " << tssfac * dt_e << " s to about "
+                                << dt_combined << " s (TSSFAC applied). Lower SLSFAC/SFS/SFM or use SOFT 1 to keep "
+                                << "the element step");
   }
   external_and_contact_forces(0.0);
 
@@ -153,6 +162,7 @@ void Solver::external_and_contact_forces(double dt) {
   }
   s.contact_energy = ec;
   s.friction_energy = ef;
+  if (!contacts_.empty()) update_contact_step();
   const double dt_n1 = 0.5 * (s.dt_prev_half + s.dt_next_half);
   double ew = 0;
   for (auto& w : walls_) {
@@ -199,13 +209,8 @@ void Solver::delete_elements(const std::vector<Index>& ids) {
       if (e > start) ranges.push_back({start, e});
     }
   }
-  bool rebuilt = false;
   for (auto& c : contacts_)
-    if (c.eroding()) {
-      c.rebuild(alive_, state_.x);
-      rebuilt = true;
-    }
-  if (rebuilt) update_contact_step();  // new faces, new springs
+    if (c.eroding()) c.rebuild(alive_, state_.x);
 }
 
 double Solver::combined_step(double dt_element, double dt_contact) {
@@ -227,14 +232,17 @@ double Solver::combined_step(double dt_element, double dt_contact) {
 }
 
 void Solver::update_contact_step() {
-  state_.dt_contact = 0;
+  // After the contact pass at x^{n+1}: the springs now active enter dt^{n+3/2}. Per cycle, as the
+  // nodal step of Radioss does with the contact stiffness, so the approach phase (no spring) keeps
+  // the element step and a stiff contact lowers it only while it acts.
+  State& s = state_;
   double dt_contact = std::numeric_limits<double>::infinity();
-  for (const auto& c : contacts_)
-    if (c.stable_step() < dt_contact) {
-      dt_contact = c.stable_step();
-      stiffest_contact_ = c.name();
-    }
-  if (std::isfinite(dt_contact)) state_.dt_contact = dt_contact;
+  for (const auto& c : contacts_) dt_contact = std::min(dt_contact, c.spring_stable_step());
+  if (dt_contact_floor_ > 0) dt_contact = std::min(dt_contact, dt_contact_floor_);
+  s.dt_contact = std::isfinite(dt_contact) ? dt_contact : 0.0;
+  if (!(dt_element_crit_ > 0)) return;  // no element step (all eroded): keep the last step
+  s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < dt_element_crit_;
+  s.dt_next_half = model_.control.tssfac * combined_step(dt_element_crit_, s.dt_contact);
 }
 
 void Solver::step() {
@@ -405,9 +413,9 @@ void Solver::check_after_pass(double dt_used) {
     if (s.eroded_elements > 0 && s.dt_next_half > 0) return;
     throw RunError("the model has no deformable element, so no stable time step exists");
   }
-  // Combined element and contact step (combined_step); "controls": the contact frequency is the higher.
-  s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < total.dt_min;
-  s.dt_next_half = model_.control.tssfac * combined_step(total.dt_min, s.dt_contact);
+  // Element step; the contact springs are added after the contact pass (update_contact_step).
+  dt_element_crit_ = total.dt_min;
+  s.dt_next_half = model_.control.tssfac * total.dt_min;
   s.dt_element = total.dt_element;
   if (s.dt_initial > 0 && s.dt_next_half < model_.control.dt_min_ratio * s.dt_initial)
     throw RunError(msg() << "time step collapsed to " << s.dt_next_half << " s, below " << model_.control.dt_min_ratio

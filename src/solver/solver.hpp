@@ -74,7 +74,8 @@ class Solver {
   void external_and_contact_forces(double dt);
   // Stable step of element and contact springs together, no TSSFAC (see the definition).
   static double combined_step(double dt_element, double dt_contact);
-  // state_.dt_contact: the smallest contact stable step over the contacts (0 = none).
+  // After the contact pass: state_.dt_contact from the active springs (0 = none) and dt_next_half
+  // = TSSFAC combined_step(element step, contact step).
   void update_contact_step();
 
   const model::Model& model_;
@@ -94,7 +95,8 @@ class Solver {
   std::vector<contact::RigidWallConstraint> walls_;
   std::vector<contact::InitialPenetrations> initial_penetrations_;
   std::vector<std::string> warnings_;
-  std::string stiffest_contact_;           // contact with the smallest stable step
+  double dt_element_crit_ = 0;              // s, element stable step of the last pass (no TSSFAC)
+  double dt_contact_floor_ = 0;             // s, a priori contact step when stiffer than the elements, else 0
   double gravity_work_ = 0;                // J, work of gravity up to t^n (Σ m g . (x - x0))
   // Element deletion: alive[b][e] (empty vector = all alive) and, per chunk, its alive ranges.
   contact::AliveMask alive_;
