@@ -27,12 +27,13 @@ PenaltyContact::PenaltyContact(const model::Model& model, const model::Contact& 
 
 void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive) {
   const auto& spec = def_.spec;
-  // Keep per-node history across a rebuild (eroding contact): forces, friction, offsets.
-  // history key: 2 * node + side.
-  std::vector<std::pair<Index, std::array<double, 5>>> history;
+  // Keep per-node history across a rebuild (eroding contact): forces, friction, offsets, whether
+  // the node was in contact (its spring is not a new one). history key: 2 * node + side.
+  std::vector<std::pair<Index, std::array<double, 6>>> history;
   for (std::size_t i = 0; i < sn_node_.size(); ++i)
     history.push_back({2 * sn_node_[i] + sn_side_[i],
-                       {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i]}});
+                       {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i],
+                        sn_segment_[i] >= 0 ? 1.0 : 0.0}});
   std::vector<std::pair<Index, std::array<double, 3>>> old_forces;
   for (std::size_t u = 0; u < union_nodes_.size(); ++u)
     old_forces.push_back({union_nodes_[u], {fc_prev_[3 * u], fc_prev_[3 * u + 1], fc_prev_[3 * u + 2]}});
@@ -144,6 +145,7 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   sn_offset_.assign(N, 0.0);
   sn_ft_.assign(3 * N, 0.0);
   sn_segment_.assign(N, -1);
+  sn_engaged_.assign(N, 0);
   if (!history.empty()) {  // restore the per-node history (once per rebuild)
     std::vector<Index> slave_of(2 * model_.num_nodes(), -1);
     for (std::size_t i = 0; i < N; ++i) slave_of[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
@@ -152,6 +154,7 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
       if (i < 0) continue;
       for (int d = 0; d < 3; ++d) sn_ft_[3 * std::size_t(i) + d] = h[d];
       sn_offset_[i] = h[3];
+      sn_engaged_[i] = h[5] > 0;
     }
   }
 
@@ -588,8 +591,9 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     const double* vi = &v[3 * std::size_t(sn_node_[i])];
     const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max));
     double* ft = &sn_ft_[3 * i];
-    const bool entering = sn_segment_[i] < 0;
+    const bool entering = !sn_engaged_[i];
     sn_segment_[i] = s;
+    sn_engaged_[i] = s >= 0;
     if (s < 0) {
       ft[0] = ft[1] = ft[2] = 0;
       continue;

@@ -131,6 +131,7 @@ class PenaltyContact {
   std::vector<double> sn_normal_;  // (N, 3) area-weighted outward normal of the node's own surface
   std::vector<Index> seg_slave_;   // (S, 4) slave index of each segment node on the segment's side
   std::vector<long> sn_segment_;   // segment the node was in contact with at the last pass, -1
+  std::vector<char> sn_engaged_;   // in contact at the last pass (kept across a rebuild, unlike sn_segment_)
   // Incremental search (LS-DYNA-style: between bucket sorts a node only looks at the segments it
   // can reach): candidates of slave node i are cand_[cand_start_[i] .. cand_start_[i + 1]), built
   // at each sort from its bucket, in bucket order.
