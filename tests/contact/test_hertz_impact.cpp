@@ -13,7 +13,7 @@
 // shell over the block's own fine grid (r <= 1.25 a), its mass set to m / 4 (quarter), x, y and
 // the rotations fixed by symmetry. The block (ELFORM 1 with IHQ 3, Flanagan-Belytschko viscous
 // hourglass control: the stiffness forms IHQ 4/5 make the graded mesh's long thin elements too
-// stiff, IHQ 5 gave +7 % on F_max at a/h = 12; one-point elements cost about a fifth of ELFORM 2,
+// stiff, IHQ 5 gave +7 % on F_max at a/h = 12; one-point elements cost several times less than ELFORM 2,
 // which this test used before at 80 s; errors at a/h = 12 went from +1.1 / -2.2 / -0.1 % with
 // ELFORM 2 to +1.4 / -2.7 / +0.1 % for d_max / F_max / t_c, well inside the tolerance below) is a
 // tensor-product grid: uniform h over 1.25 a laterally and 0.75 a in depth (the Hertz stress
