@@ -7,14 +7,20 @@
 //               g = n . (x_s - x_c) - g_0 lies in (-depth, 0) (g_0: initial-penetration offset).
 //               Allowance and bucket edge follow the median segment size and each segment's box
 //               is expanded by its own margin (graded meshes: a fine zone is not one bucket).
+//               Incremental: at each sort every node keeps the segments it can reach before the
+//               next one and searches only those; only reachable segments are refreshed.
 //   stiffness : SOFT 0  k = min(k_node, k_seg), k_seg = SLSFAC SF K A^2 / V (PENOPT 1)
 //               SOFT 1  k = max(SOFT 0 value, SOFSCL 0.5 m* / dt_c^2), m* = min(node, segment mass)
 //               SOFT 2  k = 0.5 SLSFAC SF (m1 m2 / (m1 + m2)) / dt_c^2, m = segment masses
 //   force     : f_s = (k |g| + viscous) n + f_t on the node, -N_k f_s on the segment nodes, so
 //               linear momentum is conserved to round-off. Friction: elastic-slip return map with
 //               mu = FD + (FS - FD) exp(-DC |v_rel|); VDC: normal viscous damping, % of critical.
-//   energy    : contact energy = - work of the contact forces (trapezoid in time); the frictional
-//               part (work of the tangential forces against the slip) is reported separately.
+//   energy    : contact energy = - work of the contact forces (trapezoid in time; a spring that
+//               engages in the step is booked as 0.5 k g^2); the frictional part (work of the
+//               tangential forces against the slip) is reported separately.
+//   stability : a priori step of the stiffest single spring (check, warning) and, every pass, the
+//               Gershgorin bound of the active springs (spring_stable_step), which the solver
+//               combines with the element step.
 // Serial and allocation-free per cycle (buffers sized at construction or rebuild), so the result
 // does not depend on the thread count.
 #pragma once

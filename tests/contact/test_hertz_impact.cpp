@@ -22,12 +22,14 @@
 // Contact: automatic surface to surface, SOFT 0, SLSFAC 0.5 (the default 0.1 is a robustness
 // choice, not an accuracy one). Time step: the solver combines the element step with the active
 // contact springs (solver.cpp, combined_step); the approach runs at the element step. TSSFAC 0.7,
-// not 0.9: at a/h = 12 the run goes unstable at 0.8 and 0.9 about 1 us into contact. The contact
-// part of the bound is a Gershgorin bound of the active springs (rigorous for them) and the
-// combination with the elements is Weyl's inequality, so the shortfall is in the elements'
-// Courant estimate L/c, which is not an upper bound of their frequency (a lone element needs
-// TSSFAC 0.734, tests/core); with the contact spring on the surface nodes the margin left at 0.9
-// is not enough. (The former rule min(dt_e, dt_c) needed 0.5: 0.7 went unstable at a/h = 16 with ELFORM 2.)
+// not 0.9: at a/h = 12 the run goes unstable at 0.8 and 0.9 about 1 us into contact (a/h = 3 and
+// 6 run at 0.9). It is not the contact stiffness: the contact part of the bound is a Gershgorin
+// bound of the active springs, combined by Weyl's inequality, and the run fails the same way with
+// a 10x softer contact (SLSFAC 0.05, contact frequency a quarter of the elements') and with
+// ELFORM 2. Unexplained; suspects are the catch/release logic of the search (a node is caught
+// only within the depth it could have crossed in one step, so the force switches in steps) and
+// the elements' L/c, which is not an upper bound of their frequency (a lone element needs 0.734).
+// The former rule min(dt_e, dt_c) needed 0.5 (0.7 went unstable at a/h = 16 with ELFORM 2).
 //
 // Measured: indentation d = approach of the sphere since its pole reached the block's top surface
 // (relative to the fixed base), contact force F = 4 x the z contact force on the quarter sphere,
