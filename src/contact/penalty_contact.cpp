@@ -9,30 +9,6 @@ namespace plyimpact::contact {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Largest distance between the unit normal at a corner of the bilinear segment xq (4, 3) and the
-// unit vector nb. It bounds the deviation over the whole segment: t_xi x t_eta is bilinear in
-// (xi, eta), a positive combination of the four corner normals, so its direction stays inside
-// their cone. 2 (no bound) for a degenerate corner.
-double normal_deviation(const double* xq, const double* nb) {
-  double e[4][3];  // edges 01, 12, 32, 03
-  for (int d = 0; d < 3; ++d) {
-    e[0][d] = xq[3 + d] - xq[d];
-    e[1][d] = xq[6 + d] - xq[3 + d];
-    e[2][d] = xq[6 + d] - xq[9 + d];
-    e[3][d] = xq[9 + d] - xq[d];
-  }
-  const int pairs[4][2] = {{0, 3}, {0, 1}, {2, 1}, {2, 3}};  // corner k: t_xi x t_eta from these edges
-  double dev = 0, nk[3];
-  for (int k = 0; k < 4; ++k) {
-    cross3(e[pairs[k][0]], e[pairs[k][1]], nk);
-    const double lk = std::sqrt(dot3(nk, nk));
-    if (!(lk > 0)) return 2;
-    const double dx = nk[0] / lk - nb[0], dy = nk[1] / lk - nb[1], dz = nk[2] / lk - nb[2];
-    dev = std::max(dev, std::sqrt(dx * dx + dy * dy + dz * dz));
-  }
-  return dev;
-}
 }
 
 PenaltyContact::PenaltyContact(const model::Model& model, const model::Contact& def, const std::vector<double>& x,
@@ -51,12 +27,13 @@ PenaltyContact::PenaltyContact(const model::Model& model, const model::Contact& 
 
 void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive) {
   const auto& spec = def_.spec;
-  // Keep per-node history across a rebuild (eroding contact): forces, friction, offsets.
-  // history key: 2 * node + side.
-  std::vector<std::pair<Index, std::array<double, 5>>> history;
+  // Keep per-node history across a rebuild (eroding contact): forces, friction, offsets, whether
+  // the node was in contact (its spring is not a new one). history key: 2 * node + side.
+  std::vector<std::pair<Index, std::array<double, 6>>> history;
   for (std::size_t i = 0; i < sn_node_.size(); ++i)
     history.push_back({2 * sn_node_[i] + sn_side_[i],
-                       {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i]}});
+                       {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i],
+                        sn_segment_[i] >= 0 ? 1.0 : 0.0}});
   std::vector<std::pair<Index, std::array<double, 3>>> old_forces;
   for (std::size_t u = 0; u < union_nodes_.size(); ++u)
     old_forces.push_back({union_nodes_[u], {fc_prev_[3 * u], fc_prev_[3 * u + 1], fc_prev_[3 * u + 2]}});
@@ -104,8 +81,8 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   add_side(def_.a, builder_a_, 0);
   if (!single_) add_side(def_.b, builder_b_, 1);
   const std::size_t S = seg_side_.size();
-  seg_sphere_.assign(4 * S, 0.0);
-  seg_frame_.assign(4 * S, 0.0);
+  seg_geo_.assign(kGeo * S, 0.0);
+  seg_flag_.assign(S, 0);
   for (auto& ids : side_segs_) ids.clear();
   for (std::size_t s = 0; s < S; ++s) side_segs_[single_ ? 0 : seg_side_[s]].push_back(Index(s));
 
@@ -153,11 +130,22 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
     seg_slave_.resize(4 * S);
     for (std::size_t s = 0; s < S; ++s)
       for (int k = 0; k < 4; ++k) seg_slave_[4 * s + k] = slave_index[2 * std::size_t(seg_nodes_[4 * s + k]) + seg_side_[s]];
+    // Own-side segments of each slave node (CSR, ascending segment order).
+    own_start_.assign(N + 1, 0);
+    for (Index i : seg_slave_)
+      if (i >= 0) ++own_start_[std::size_t(i) + 1];
+    for (std::size_t i = 0; i < N; ++i) own_start_[i + 1] += own_start_[i];
+    own_segs_.resize(std::size_t(own_start_[N]));
+    std::vector<Index> fill(own_start_.begin(), own_start_.end() - 1);
+    for (std::size_t s = 0; s < S; ++s)
+      for (int k = 0; k < 4; ++k)
+        if (const Index i = seg_slave_[4 * s + k]; i >= 0) own_segs_[std::size_t(fill[std::size_t(i)]++)] = Index(s);
   }
   sn_normal_.assign(3 * N, 0.0);
   sn_offset_.assign(N, 0.0);
   sn_ft_.assign(3 * N, 0.0);
   sn_segment_.assign(N, -1);
+  sn_engaged_.assign(N, 0);
   if (!history.empty()) {  // restore the per-node history (once per rebuild)
     std::vector<Index> slave_of(2 * model_.num_nodes(), -1);
     for (std::size_t i = 0; i < N; ++i) slave_of[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
@@ -166,6 +154,7 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
       if (i < 0) continue;
       for (int d = 0; d < 3; ++d) sn_ft_[3 * std::size_t(i) + d] = h[d];
       sn_offset_[i] = h[3];
+      sn_engaged_[i] = h[5] > 0;
     }
   }
 
@@ -186,9 +175,17 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
     for (int k = 0; k < 4; ++k) add_union(seg_nodes_[4 * s + k], seg_side_[s] == 0 && !single_);
   sn_local_.resize(N);
   for (std::size_t i = 0; i < N; ++i) sn_local_[i] = local_of_[sn_node_[i]];
+  seg_local_.resize(4 * S);
+  for (std::size_t k = 0; k < 4 * S; ++k) seg_local_[k] = local_of_[seg_nodes_[k]];
   const std::size_t U = union_nodes_.size();
   fc_.assign(3 * U, 0.0);
   fc_prev_.assign(3 * U, 0.0);
+  union_row_.assign(U, 0.0);
+  union_inv_mass_.resize(U);
+  for (std::size_t u = 0; u < U; ++u) {
+    const Index n = union_nodes_[u];
+    union_inv_mass_[u] = !node_rigid_[n] && model_.mass[n] > 0 ? 1 / model_.mass[n] : 0.0;
+  }
   x_sort_.assign(3 * U, 0.0);
   for (const auto& [node, f] : old_forces)
     if (local_of_[node] >= 0)
@@ -363,6 +360,44 @@ void PenaltyContact::sort(const double* x) {
     for (int d = 0; d < 3; ++d) x_sort_[3 * u + d] = x[3 * std::size_t(union_nodes_[u]) + d];
   cycles_since_sort_ = 0;
   ++sorts_;
+  refresh(x, true);
+  build_candidates(x);
+}
+
+void PenaltyContact::build_candidates(const double* x) {
+  // Until the next sort every contact node moves less than a / 4 from where it is now (the re-sort
+  // test), a = the allowance: a node-to-centre distance changes by at most a / 2 and a bounding
+  // radius grows by at most a / 2. The search's sphere test (find_segment) accepts at most
+  // |p - c| <= r_factor r + depth, so a segment with
+  //   |p - c| > r_factor (r + a / 2) + depth + a / 2   now
+  // cannot pass it before the next sort and is left out of the node's list. What remains is the
+  // node's bucket filtered to its neighbourhood, in bucket order (same ties as a full search).
+  const std::size_t N = sn_node_.size(), S = seg_side_.size();
+  const double r_factor = 1 + 2 * std::max(def_.spec.MAXPAR - 1, 0.0), half_a = 0.5 * allowance_;
+  cand_start_.resize(N + 1);
+  cand_.clear();
+  std::fill(seg_flag_.begin(), seg_flag_.end(), 0);
+  for (std::size_t i = 0; i < N; ++i) {
+    cand_start_[i] = Index(cand_.size());
+    const double* p = &x[3 * std::size_t(sn_node_[i])];
+    const int gs = single_ ? 0 : 1 - sn_side_[i];
+    const std::vector<Index>& ids = side_segs_[gs];
+    for (Index k : grid_[gs].candidates(p)) {
+      const std::size_t s = std::size_t(ids[std::size_t(k)]);
+      const double* g = &seg_geo_[kGeo * s];
+      const double dx = p[0] - g[0], dy = p[1] - g[1], dz = p[2] - g[2];
+      const double reach = r_factor * (g[3] + half_a) + seg_depth_[s] + half_a;
+      if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
+      cand_.push_back(Index(s));
+      seg_flag_[s] |= 1;
+    }
+    if (Index(cand_.size()) > cand_start_[i])  // its normal is needed: its own segments too
+      for (Index k = own_start_[i]; k < own_start_[i + 1]; ++k) seg_flag_[std::size_t(own_segs_[std::size_t(k)])] |= 2;
+  }
+  cand_start_[N] = Index(cand_.size());
+  refresh_segs_.clear();
+  for (std::size_t s = 0; s < S; ++s)
+    if (seg_flag_[s]) refresh_segs_.push_back(Index(s));
 }
 
 double PenaltyContact::stiffness(std::size_t i, std::size_t s) const {
@@ -380,6 +415,8 @@ double PenaltyContact::stiffness(std::size_t i, std::size_t s) const {
 }
 
 long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& best, double new_contact_depth) const {
+  const Index c_begin = cand_start_[i], c_end = cand_start_[i + 1];
+  if (c_begin == c_end) return -1;  // nothing within reach until the next sort
   const long last = sn_segment_[i];
   const Index node = sn_node_[i];
   const double* p = &x[3 * std::size_t(node)];
@@ -391,6 +428,15 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
   long best_s = -1;
   double best_g = 0;
   auto consider = [&](Index s) {
+    const double* sg = &seg_geo_[kGeo * std::size_t(s)];
+    // Full release depth only on the segment the node was already in contact with.
+    const double accept =
+        s == last ? seg_depth_[s] : std::min(seg_depth_[s], new_contact_depth + 0.02 * seg_depth_[s]);
+    // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, and it can
+    // only beat the best so far if it is less penetrated, |g| < |g_best|.
+    const double dx = p[0] - sg[0], dy = p[1] - sg[1], dz = p[2] - sg[2];
+    const double reach = r_factor * sg[3] + (best_s >= 0 ? std::min(accept, -best_g) : accept);
+    if (dx * dx + dy * dy + dz * dz > reach * reach) return;
     const Index* q = &seg_nodes_[4 * std::size_t(s)];
     if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) return;
     if (single_) {
@@ -399,24 +445,13 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
       for (int k = 0; k < 8; ++k) own = own || o[k] == node;
       if (own) return;
     }
-    // Full release depth only on the segment the node was already in contact with.
-    const double accept =
-        s == last ? seg_depth_[s] : std::min(seg_depth_[s], new_contact_depth + 0.02 * seg_depth_[s]);
-    // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, and it can
-    // only beat the best so far if it is less penetrated, |g| < |g_best|.
-    const double* c = &seg_sphere_[4 * std::size_t(s)];
-    const double dx = p[0] - c[0], dy = p[1] - c[1], dz = p[2] - c[2];
-    const double reach = r_factor * c[3] + (best_s >= 0 ? std::min(accept, -best_g) : accept);
-    if (dx * dx + dy * dy + dz * dz > reach * reach) return;
-    double xq[12];
-    for (int k = 0; k < 4; ++k)
-      for (int d = 0; d < 3; ++d) xq[3 * k + d] = x[3 * std::size_t(q[k]) + d];
-    // Orientation pre-check with the segment's mean normal, made conservative by the normal's
-    // largest deviation over the segment: it skips only what the exact check below would skip
+    // Orientation pre-check with the segment's centre normal, made conservative by the bound of
+    // the normal's deviation over the segment: it skips only what the exact check below would skip
     // (a node beside a side face it cannot push through), without the projection.
-    const double* fr = &seg_frame_[4 * std::size_t(s)];
-    if (nn_len > 0 && dot3(nn, fr) > (-0.3 + fr[3]) * nn_len) return;
-    const Projection pr = project_to_quad(p, xq, def_.spec.MAXPAR);
+    double n0[3];
+    cross3(sg + 4, sg + 8, n0);
+    if (nn_len > 0 && dot3(nn, n0) * sg[11] > (-0.3 + sg[7]) * nn_len) return;
+    const Projection pr = project_to_bilinear(p, sg, def_.spec.MAXPAR);
     if (!pr.inside) return;
     // Orientation: the node's own surface must face the segment (normals at more than ~107 deg),
     // so a node at a corner is not pushed out through a side face it merely slid under.
@@ -431,75 +466,85 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
       best_g = g;
     }
   };
-  if (last >= 0) consider(Index(last));
-  const int gs = single_ ? 0 : 1 - sn_side_[i];
-  const std::vector<Index>& ids = side_segs_[gs];
-  for (Index k : grid_[gs].candidates(p)) {
-    const Index s = ids[std::size_t(k)];
+  // The segment of the last pass first (a segment not in the list is out of reach).
+  if (last >= 0)
+    for (Index k = c_begin; k < c_end; ++k)
+      if (cand_[std::size_t(k)] == Index(last)) {
+        consider(Index(last));
+        break;
+      }
+  for (Index k = c_begin; k < c_end; ++k) {
+    const Index s = cand_[std::size_t(k)];
     if (s != last) consider(s);
   }
   return best_s;
 }
 
-void PenaltyContact::refresh_segments(const double* x) {
-  // Bounding sphere (centroid, largest node distance), the unit normal of the diagonals n_bar and
-  // the largest deviation of the segment's normal from it (normal_deviation).
-  const std::size_t S = seg_side_.size();
-  for (std::size_t s = 0; s < S; ++s) {
-    double* c = &seg_sphere_[4 * s];
-    double* fr = &seg_frame_[4 * s];
-    const Index* q = &seg_nodes_[4 * s];
-    const double* p[4] = {&x[3 * std::size_t(q[0])], &x[3 * std::size_t(q[1])], &x[3 * std::size_t(q[2])],
-                          &x[3 * std::size_t(q[3])]};
-    for (int d = 0; d < 3; ++d) c[d] = 0.25 * (p[0][d] + p[1][d] + p[2][d] + p[3][d]);
-    double r2 = 0;
-    for (int k = 0; k < 4; ++k)
-      r2 = std::max(r2, (p[k][0] - c[0]) * (p[k][0] - c[0]) + (p[k][1] - c[1]) * (p[k][1] - c[1]) +
-                            (p[k][2] - c[2]) * (p[k][2] - c[2]));
-    c[3] = std::sqrt(r2);
-    double d02[3], d13[3];  // the diagonals
-    for (int d = 0; d < 3; ++d) {
-      d02[d] = p[2][d] - p[0][d];
-      d13[d] = p[3][d] - p[1][d];
-    }
-    double nb[3];
-    cross3(d02, d13, nb);
-    const double len = std::sqrt(dot3(nb, nb));
-    if (!(len > 0)) {
-      fr[0] = fr[1] = fr[2] = 0;
-      fr[3] = 2;  // degenerate: no orientation pre-check
-      continue;
-    }
-    for (int d = 0; d < 3; ++d) fr[d] = nb[d] / len;
-    double xq[12];
-    for (int k = 0; k < 4; ++k)
-      for (int d = 0; d < 3; ++d) xq[3 * k + d] = p[k][d];
-    fr[3] = normal_deviation(xq, fr);
+void PenaltyContact::refresh_segment(std::size_t s, const double* x) {
+  // Coefficient form, bounding sphere (centre c, largest corner distance) and the normal bound:
+  // t_xi x t_eta = n0 + xi u + eta w with n0 = a1 x a2, u = a1 x a3, w = a3 x a2 (linear: the
+  // xi eta term is a3 x a3 = 0), so over the segment |n - n0| <= |u| + |w| =: E and the unit
+  // normal deviates from n0 / |n0| by at most 2 E / |n0| (|a/|a| - b/|b|| <= 2 |a - b| / |b|).
+  double* g = &seg_geo_[kGeo * s];
+  const Index* q = &seg_nodes_[4 * s];
+  const double* p0 = &x[3 * std::size_t(q[0])];
+  const double* p1 = &x[3 * std::size_t(q[1])];
+  const double* p2 = &x[3 * std::size_t(q[2])];
+  const double* p3 = &x[3 * std::size_t(q[3])];
+  bilinear_coefficients(p0, p1, p2, p3, g);
+  double r2 = 0;
+  for (const double* pk : {p0, p1, p2, p3}) {
+    const double dx = pk[0] - g[0], dy = pk[1] - g[1], dz = pk[2] - g[2];
+    r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
   }
+  g[3] = std::sqrt(r2);
+  double n0[3], u[3], w[3];
+  cross3(g + 4, g + 8, n0);
+  cross3(g + 4, g + 12, u);
+  cross3(g + 12, g + 8, w);
+  const double len = std::sqrt(dot3(n0, n0));
+  if (!(len > 0)) {
+    g[7] = 2;  // degenerate: no orientation pre-check
+    g[11] = 0;
+    return;
+  }
+  g[7] = std::min(2.0, 2 * (std::sqrt(dot3(u, u)) + std::sqrt(dot3(w, w))) / len);
+  g[11] = 1 / len;
 }
 
-void PenaltyContact::update_node_normals(const double* x) {
-  std::fill(sn_normal_.begin(), sn_normal_.end(), 0.0);
-  const std::size_t S = seg_side_.size();
-  for (std::size_t s = 0; s < S; ++s) {
-    const Index* q = &seg_nodes_[4 * s];
-    double d1[3], d2[3], n[3];
-    for (int d = 0; d < 3; ++d) {
-      d1[d] = x[3 * std::size_t(q[2]) + d] - x[3 * std::size_t(q[0]) + d];
-      d2[d] = x[3 * std::size_t(q[3]) + d] - x[3 * std::size_t(q[1]) + d];
-    }
-    cross3(d1, d2, n);  // twice the area times the mean normal
+void PenaltyContact::refresh(const double* x, bool all) {
+  // Node normal: sum over the node's own segments of x_13 x x_24 = 8 a1 x a2 (twice the area times
+  // the mean normal), in ascending segment order.
+  auto add_normal = [&](std::size_t s) {
+    const double* g = &seg_geo_[kGeo * s];
+    double n[3];
+    cross3(g + 4, g + 8, n);
     for (int k = 0; k < 4; ++k)
       if (const Index i = seg_slave_[4 * s + k]; i >= 0)
-        for (int d = 0; d < 3; ++d) sn_normal_[3 * std::size_t(i) + d] += n[d];
+        for (int d = 0; d < 3; ++d) sn_normal_[3 * std::size_t(i) + d] += 8 * n[d];
+  };
+  if (all) {
+    const std::size_t S = seg_side_.size();
+    for (std::size_t s = 0; s < S; ++s) refresh_segment(s, x);
+    std::fill(sn_normal_.begin(), sn_normal_.end(), 0.0);
+    for (std::size_t s = 0; s < S; ++s) add_normal(s);
+    return;
   }
+  for (Index s : refresh_segs_) {
+    refresh_segment(std::size_t(s), x);
+    if (seg_flag_[std::size_t(s)] & 2)
+      for (int k = 0; k < 4; ++k)
+        if (const Index i = seg_slave_[4 * std::size_t(s) + k]; i >= 0)
+          for (int d = 0; d < 3; ++d) sn_normal_[3 * std::size_t(i) + d] = 0;
+  }
+  for (Index s : refresh_segs_)
+    if (seg_flag_[std::size_t(s)] & 2) add_normal(std::size_t(s));
 }
 
 InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<double>& x) {
   InitialPenetrations r;
   r.moved = def_.spec.initial_penetration == config::ContactSpec::InitialPenetration::Move;
-  refresh_segments(x.data());
-  update_node_normals(x.data());
+  refresh(x.data(), true);
   for (std::size_t i = 0; i < sn_node_.size(); ++i) {
     Projection pr;
     const long s = find_segment(i, x.data(), pr, std::numeric_limits<double>::infinity());
@@ -520,37 +565,35 @@ InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<dou
 void PenaltyContact::apply(const double* x, const double* v, double* f, double dt) {
   const auto& spec = def_.spec;
   const std::size_t N = sn_node_.size(), U = union_nodes_.size();
-  // Re-sort at the interval or when a node has moved a quarter of the allowance since the last sort
-  // (node and segment together then stay within the allowance).
+  // One pass over the contact nodes: the fastest (it bounds the relative motion in one step) and
+  // the re-sort test: at the interval, or when a node has moved a quarter of the allowance since
+  // the last sort (node and segment together then stay within the allowance).
   ++cycles_since_sort_;
-  bool resort = cycles_since_sort_ >= spec.BSORT;
-  if (!resort) {
-    const double lim2 = 0.25 * allowance_ * 0.25 * allowance_;
-    for (std::size_t u = 0; u < U && !resort; ++u) {
-      const double* p = &x[3 * std::size_t(union_nodes_[u])];
-      const double dx = p[0] - x_sort_[3 * u], dy = p[1] - x_sort_[3 * u + 1], dz = p[2] - x_sort_[3 * u + 2];
-      resort = dx * dx + dy * dy + dz * dz > lim2;
-    }
+  const double lim2 = 0.25 * allowance_ * 0.25 * allowance_;
+  double v_max2 = 0, moved2 = 0;
+  for (std::size_t u = 0; u < U; ++u) {
+    const std::size_t node = std::size_t(union_nodes_[u]);
+    const double* p = &x[3 * node];
+    const double* vu = &v[3 * node];
+    const double dx = p[0] - x_sort_[3 * u], dy = p[1] - x_sort_[3 * u + 1], dz = p[2] - x_sort_[3 * u + 2];
+    moved2 = std::max(moved2, dx * dx + dy * dy + dz * dz);
+    v_max2 = std::max(v_max2, dot3(vu, vu));
   }
-  if (resort) sort(x);
-  refresh_segments(x);
-  update_node_normals(x);
+  if (cycles_since_sort_ >= spec.BSORT || moved2 > lim2) sort(x);  // sorting refreshes all
+  else refresh(x, false);
   std::fill(fc_.begin(), fc_.end(), 0.0);
   forces_ = ContactForces{};
   const bool friction = spec.FS > 0 || spec.FD > 0;
-  double friction_work = 0;
-  double v_max2 = 0;  // fastest contact node: bounds the relative motion in one step
-  for (std::size_t u = 0; u < U; ++u) {
-    const double* vu = &v[3 * std::size_t(union_nodes_[u])];
-    v_max2 = std::max(v_max2, dot3(vu, vu));
-  }
+  double friction_work = 0, entry_correction = 0;
   const double v_max = std::sqrt(v_max2);
   for (std::size_t i = 0; i < N; ++i) {
     Projection pr;
     const double* vi = &v[3 * std::size_t(sn_node_[i])];
     const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max));
     double* ft = &sn_ft_[3 * i];
+    const bool entering = !sn_engaged_[i];
     sn_segment_[i] = s;
+    sn_engaged_[i] = s >= 0;
     if (s < 0) {
       ft[0] = ft[1] = ft[2] = 0;
       continue;
@@ -592,18 +635,36 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       friction_work -= dot3(ft, vt) * dt;
       forces_.tangential += std::sqrt(dot3(ft, ft));
     }
+    // Energy of a spring that engages in this step: the trapezoid below books 0.5 fn vn dt, the
+    // force times the whole step's normal motion, but the node only crossed the surface part of
+    // the way; the spring's energy is 0.5 k g^2 = -0.5 fn g. The difference grows as k (vn dt)^2
+    // and with a stiff penalty exceeds the impact energy (ContactStep test).
+    if (entering) entry_correction += 0.5 * fn * (g - vn * dt);
     forces_.normal += fn;
     ++forces_.active;
-    double* fs = &fc_[3 * std::size_t(sn_local_[i])];
+    const Index ui = sn_local_[i];
+    double* fs = &fc_[3 * std::size_t(ui)];
     for (int d = 0; d < 3; ++d) fs[d] += F[d];
+    const Index* ql = &seg_local_[4 * std::size_t(s)];
     for (int a = 0; a < 4; ++a) {
-      double* fm = &fc_[3 * std::size_t(local_of_[q[a]])];
+      double* fm = &fc_[3 * std::size_t(ql[a])];
       for (int d = 0; d < 3; ++d) fm[d] -= pr.N[a] * F[d];
     }
+    // Stability: the spring is k b b^T (x) D, b = (1, -N_1..-N_4) over the node and the segment
+    // nodes, D <= k I (normal spring; the friction return map never exceeds the same k
+    // tangentially). Gershgorin on M^-1 K: row j gets k |b_j| sum_l |b_l| over deformable nodes
+    // (rigid nodes move with their body, whose mass is far larger; their rows and columns drop out).
+    double sum_b = union_inv_mass_[std::size_t(ui)] > 0 ? 1.0 : 0.0;
+    for (int a = 0; a < 4; ++a)
+      if (union_inv_mass_[std::size_t(ql[a])] > 0) sum_b += pr.N[a];
+    union_row_[std::size_t(ui)] += k * sum_b;
+    for (int a = 0; a < 4; ++a) union_row_[std::size_t(ql[a])] += k * pr.N[a] * sum_b;
   }
   // Scatter, energy (trapezoid: the step moved the nodes by dt v) and side-A resultant.
-  double work = 0;
+  double work = 0, omega2 = 0;
   for (std::size_t u = 0; u < U; ++u) {
+    omega2 = std::max(omega2, union_row_[u] * union_inv_mass_[u]);
+    union_row_[u] = 0;
     const std::size_t node = std::size_t(union_nodes_[u]);
     for (int d = 0; d < 3; ++d) {
       const double fu = fc_[3 * u + d];
@@ -612,8 +673,9 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       if (union_side_a_[u]) forces_.resultant[d] += fu;
     }
   }
-  energy_ -= work;
+  energy_ -= work + entry_correction;
   friction_energy_ += friction_work;
+  dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
   fc_prev_.swap(fc_);
   std::copy(fc_prev_.begin(), fc_prev_.end(), fc_.begin());  // fc_ keeps the last forces for output
 }

@@ -7,14 +7,20 @@
 //               g = n . (x_s - x_c) - g_0 lies in (-depth, 0) (g_0: initial-penetration offset).
 //               Allowance and bucket edge follow the median segment size and each segment's box
 //               is expanded by its own margin (graded meshes: a fine zone is not one bucket).
+//               Incremental: at each sort every node keeps the segments it can reach before the
+//               next one and searches only those; only reachable segments are refreshed.
 //   stiffness : SOFT 0  k = min(k_node, k_seg), k_seg = SLSFAC SF K A^2 / V (PENOPT 1)
 //               SOFT 1  k = max(SOFT 0 value, SOFSCL 0.5 m* / dt_c^2), m* = min(node, segment mass)
 //               SOFT 2  k = 0.5 SLSFAC SF (m1 m2 / (m1 + m2)) / dt_c^2, m = segment masses
 //   force     : f_s = (k |g| + viscous) n + f_t on the node, -N_k f_s on the segment nodes, so
 //               linear momentum is conserved to round-off. Friction: elastic-slip return map with
 //               mu = FD + (FS - FD) exp(-DC |v_rel|); VDC: normal viscous damping, % of critical.
-//   energy    : contact energy = - work of the contact forces (trapezoid in time); the frictional
-//               part (work of the tangential forces against the slip) is reported separately.
+//   energy    : contact energy = - work of the contact forces (trapezoid in time; a spring that
+//               engages in the step is booked as 0.5 k g^2); the frictional part (work of the
+//               tangential forces against the slip) is reported separately.
+//   stability : a priori step of the stiffest single spring (check, warning) and, every pass, the
+//               Gershgorin bound of the active springs (spring_stable_step), which the solver
+//               combines with the element step.
 // Serial and allocation-free per cycle (buffers sized at construction or rebuild), so the result
 // does not depend on the thread count.
 #pragma once
@@ -74,8 +80,13 @@ class PenaltyContact {
   std::size_t num_slave_nodes() const { return sn_node_.size(); }
   double stiffness_min() const { return k_min_; }   // N/m over possible node-segment pairs
   double stiffness_max() const { return k_max_; }
-  // Stable step of the stiffest node-segment spring, 2 / omega (no TSSFAC).
+  // A priori stable step of the stiffest single node-segment spring that can form, 2 / omega (no
+  // TSSFAC): for `check` and the set-up warning.
   double stable_step() const { return dt_stable_; }
+  // Stable step of the springs active in the last pass, 2 / omega with omega^2 the Gershgorin bound
+  // of M^-1 K_c (every spring touching a node summed; the solver combines it with the element step).
+  // Infinity when no spring is active.
+  double spring_stable_step() const { return dt_springs_; }
   long sorts() const { return sorts_; }
 
  private:
@@ -88,8 +99,13 @@ class PenaltyContact {
   // "penetration" is a node beside an edge projecting onto a side face, not a real one).
   long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth) const;
   void estimate_stiffness_range();
-  void update_node_normals(const double* x);
-  void refresh_segments(const double* x);  // spheres and frames at x
+  // Search data of segment s at x (seg_geo_): bilinear coefficients, bounding sphere, normal bound.
+  void refresh_segment(std::size_t s, const double* x);
+  // Per-cycle refresh of the segments some node can reach (refresh_segs_) and the node normals of
+  // the nodes that have candidates; all segments and nodes when `all`.
+  void refresh(const double* x, bool all);
+  // After a sort: each slave node's candidate list (segments it can reach before the next sort).
+  void build_candidates(const double* x);
 
   const model::Model& model_;
   model::Contact def_;
@@ -105,8 +121,13 @@ class PenaltyContact {
   std::vector<double> seg_mass_;   // SOFT 2 segment mass (half the element's)
   std::vector<double> seg_node_mass_;  // mean nodal mass of its nodes
   std::vector<double> seg_depth_;  // release depth, m
-  std::vector<double> seg_sphere_; // (S, 4) centre and radius, refreshed every pass
-  std::vector<double> seg_frame_;  // (S, 4) unit diagonal normal, largest corner-normal deviation
+  // Hot per-segment record, refreshed every pass, one 128-byte record per segment (a candidate's
+  // tests read it contiguously instead of gathering four nodes): [0..2] centre c, [3] bounding
+  // radius, [4..6] a1, [7] bound of the unit normal's deviation from the centre normal,
+  // [8..10] a2, [11] 1 / |a1 x a2|, [12..14] a3 (geometry.hpp coefficient form), [15] unused.
+  static constexpr std::size_t kGeo = 16;
+  std::vector<double> seg_geo_;    // (S, kGeo)
+  std::vector<Index> seg_local_;   // (S, 4) union index of each segment node
   // Slave nodes.
   std::vector<Index> sn_node_;
   std::vector<char> sn_side_;
@@ -116,11 +137,21 @@ class PenaltyContact {
   std::vector<double> sn_normal_;  // (N, 3) area-weighted outward normal of the node's own surface
   std::vector<Index> seg_slave_;   // (S, 4) slave index of each segment node on the segment's side
   std::vector<long> sn_segment_;   // segment the node was in contact with at the last pass, -1
+  std::vector<char> sn_engaged_;   // in contact at the last pass (kept across a rebuild, unlike sn_segment_)
+  // Incremental search (LS-DYNA-style: between bucket sorts a node only looks at the segments it
+  // can reach): candidates of slave node i are cand_[cand_start_[i] .. cand_start_[i + 1]), built
+  // at each sort from its bucket, in bucket order.
+  std::vector<Index> cand_start_, cand_;
+  std::vector<Index> own_start_, own_segs_;  // (CSR over slave nodes) segments of the node's own side
+  std::vector<char> seg_flag_;     // (S) 1: some node's candidate, 2: adjoins a node with candidates
+  std::vector<Index> refresh_segs_;  // segments with a flag, ascending
   // Nodes receiving forces (union of both sides), their forces and positions at the last sort.
   std::vector<Index> union_nodes_;
   std::vector<Index> local_of_;    // (num_nodes) -> index in union_nodes_, -1
   std::vector<char> union_side_a_;
   std::vector<double> fc_, fc_prev_, x_sort_;
+  std::vector<double> union_inv_mass_;  // 1 / m of deformable nodes, 0 for rigid or massless ones
+  std::vector<double> union_row_;       // Gershgorin row sums of the last pass's springs (zeroed after use)
   std::vector<Index> sn_local_;    // slave node -> union index
   BucketGrid grid_[2];                  // per side (single surface: [0] only)
   std::vector<Index> side_segs_[2];     // grid item -> segment
@@ -131,6 +162,7 @@ class PenaltyContact {
   double energy_ = 0, friction_energy_ = 0;
   ContactForces forces_;
   double k_min_ = 0, k_max_ = 0, dt_stable_ = std::numeric_limits<double>::infinity();
+  double dt_springs_ = std::numeric_limits<double>::infinity();
 };
 
 }  // namespace plyimpact::contact

@@ -110,25 +110,29 @@ Solver::Solver(const model::Model& model) : model_(model) {
     initial_penetrations_.push_back(contacts_.back().resolve_initial_penetrations(state_.x));
   }
   for (const auto& w : model.rigid_walls) walls_.emplace_back(w);
-  double dt_contact = std::numeric_limits<double>::infinity();
+  // A priori check of the stiffest spring that can form (the run itself combines the element step
+  // with the springs actually active, update_contact_step): warn when it would dominate the step.
+  double dt_apriori = std::numeric_limits<double>::infinity();
   std::string stiffest;
   for (const auto& c : contacts_)
-    if (c.stable_step() < dt_contact) {
-      dt_contact = c.stable_step();
+    if (c.stable_step() < dt_apriori) {
+      dt_apriori = c.stable_step();
       stiffest = c.name();
     }
-  if (std::isfinite(dt_contact)) {
-    state_.dt_contact = dt_contact;
-    const double dt_elements = state_.dt_next_half;
-    if (model.control.tssfac * dt_contact < dt_elements) {
-      state_.dt_next_half = model.control.tssfac * dt_contact;
-      state_.dt_contact_controls = true;
-      state_.dt_initial = state_.dt_next_half;
-      warnings_.push_back(msg() << "contact '" << stiffest << "': the stiffest penalty spring's frequency exceeds the "
-                                << "element step by a factor " << dt_elements / state_.dt_next_half
-                                << "; the time step is reduced from " << dt_elements << " s to "
-                                << state_.dt_next_half << " s (lower SLSFAC/SFS/SFM or use SOFT 1)");
-    }
+  if (std::isfinite(dt_apriori)) {
+    const double dt_e = dt_element_crit_, tssfac = model.control.tssfac;
+    const double dt_combined = tssfac * combined_step(dt_e, dt_apriori);
+    // Stiffer than the elements: the springs' step applies from the start, not only once they act,
+    // so the first contact step cannot drive a node a whole element step deep into a stiff spring
+    // (0.5 k g^2 created from nothing, more than the impact energy at 100x the default penalty).
+    if (dt_apriori < dt_e) dt_contact_floor_ = dt_apriori;
+    if (dt_apriori < dt_e)
+      warnings_.push_back(msg() << "contact '" << stiffest << "': the contact frequency exceeds the element step by "
+                                << dt_e / dt_apriori << " x (stiffest penalty spring 2/omega = " << dt_apriori
+                                << " s, elements " << dt_e << " s); while it is in contact the combined stable "
+                                << "step reduces the time step from " << tssfac * dt_e << " s to about "
+                                << dt_combined << " s (TSSFAC applied). Lower SLSFAC/SFS/SFM or use SOFT 1 to keep "
+                                << "the element step");
   }
   external_and_contact_forces(0.0);
 
@@ -159,6 +163,7 @@ void Solver::external_and_contact_forces(double dt) {
   }
   s.contact_energy = ec;
   s.friction_energy = ef;
+  if (!contacts_.empty()) update_contact_step();
   const double dt_n1 = 0.5 * (s.dt_prev_half + s.dt_next_half);
   double ew = 0;
   for (auto& w : walls_) {
@@ -207,6 +212,38 @@ void Solver::delete_elements(const std::vector<Index>& ids) {
   }
   for (auto& c : contacts_)
     if (c.eroding()) c.rebuild(alive_, state_.x);
+}
+
+double Solver::combined_step(double dt_element, double dt_contact) {
+  // The element and contact stiffnesses add: K = K_e + K_c. The highest frequency of the
+  // mass-normalised sum is at most the sum of the highest of each (Weyl's inequality for symmetric
+  // matrices, lambda_max(A + B) <= lambda_max(A) + lambda_max(B)), so with omega_e = 2 / dt_e and
+  // omega_c = 2 / dt_c the central-difference limit dt = 2 / omega becomes
+  //   dt = 1 / sqrt(1 / dt_e^2 + 1 / dt_c^2).
+  // This is Radioss's nodal-step idea (the contact stiffness added to the equivalent nodal
+  // stiffness, Altair Radioss help "Nodal Time Step") applied to the two global bounds; LS-DYNA
+  // instead leaves the contact springs out of the step and only prints the step they would need
+  // ("The LS-DYNA time step size should not exceed ... to avoid contact instabilities", see
+  // blog.d3view.com/?p=2183). Taking min(dt_e, dt_c) is not enough: with dt_c = dt_e the combined
+  // frequency is sqrt(2) omega_e, unstable at TSSFAC 0.9. The bound is global (stiffest spring with
+  // the smallest element) and so conservative when they are in different places.
+  if (!(dt_contact > 0) || !std::isfinite(dt_contact)) return dt_element;
+  const double r = dt_element / dt_contact;
+  return dt_element / std::sqrt(1.0 + r * r);
+}
+
+void Solver::update_contact_step() {
+  // After the contact pass at x^{n+1}: the springs now active enter dt^{n+3/2}. Per cycle, as the
+  // nodal step of Radioss does with the contact stiffness, so the approach phase (no spring) keeps
+  // the element step and a stiff contact lowers it only while it acts.
+  State& s = state_;
+  double dt_contact = std::numeric_limits<double>::infinity();
+  for (const auto& c : contacts_) dt_contact = std::min(dt_contact, c.spring_stable_step());
+  if (dt_contact_floor_ > 0) dt_contact = std::min(dt_contact, dt_contact_floor_);
+  s.dt_contact = std::isfinite(dt_contact) ? dt_contact : 0.0;
+  if (!(dt_element_crit_ > 0)) return;  // no element step (all eroded): keep the last step
+  s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < dt_element_crit_;
+  s.dt_next_half = model_.control.tssfac * combined_step(dt_element_crit_, s.dt_contact);
 }
 
 void Solver::step() {
@@ -387,8 +424,9 @@ void Solver::check_after_pass(double dt_used) {
     if (s.eroded_elements > 0 && s.dt_next_half > 0) return;
     throw RunError("the model has no deformable element, so no stable time step exists");
   }
-  s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < total.dt_min;
-  s.dt_next_half = model_.control.tssfac * (s.dt_contact_controls ? s.dt_contact : total.dt_min);
+  // Element step; the contact springs are added after the contact pass (update_contact_step).
+  dt_element_crit_ = total.dt_min;
+  s.dt_next_half = model_.control.tssfac * total.dt_min;
   s.dt_element = total.dt_element;
   if (s.dt_initial > 0 && s.dt_next_half < model_.control.dt_min_ratio * s.dt_initial)
     throw RunError(msg() << "time step collapsed to " << s.dt_next_half << " s, below " << model_.control.dt_min_ratio

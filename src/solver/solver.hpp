@@ -1,12 +1,12 @@
 // Central-difference explicit solver with lumped mass (LS-DYNA Theory Manual, "Time Integration"):
 //   v^{n+1/2} = v^{n-1/2} + dt^n f^n / m,  dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2
 //   x^{n+1}   = x^n + dt^{n+1/2} v^{n+1/2}
-//   f^{n+1}   = element pass at x^{n+1} with v^{n+1/2}; dt^{n+3/2} = TSSFAC * min_e dt_e
+//   f^{n+1}   = element pass at x^{n+1} with v^{n+1/2}; dt^{n+3/2} = TSSFAC * min_e dt_e (with contact: combined_step)
 // Velocity boundary conditions are imposed on v^{n+1/2}; the force they exert (reaction) and its
 // work (external work) are recorded. After the element pass, gravity, penalty contact
 // (contact/penalty_contact) and rigid walls (contact/rigid_wall) add their forces, so f^{n+1}
 // includes them; rigid bodies (solver/rigid_body) take the forces of their slaved nodes. The
-// stiffest contact spring's stable step enters the time step. The solver stops with a RunError naming the element, time and
+// stiffest contact spring's stable step is combined with the element step (combined_step). The solver stops with a RunError naming the element, time and
 // cause when an element inverts, a value becomes non-finite or the step collapses.
 #pragma once
 
@@ -72,6 +72,11 @@ class Solver {
   void mark_crashfront(const std::vector<Index>& eroded);
   // Gravity, contact and rigid-wall forces at x^{n+1}; dt = Delta t^{n+1/2} (0 at t = 0).
   void external_and_contact_forces(double dt);
+  // Stable step of element and contact springs together, no TSSFAC (see the definition).
+  static double combined_step(double dt_element, double dt_contact);
+  // After the contact pass: state_.dt_contact from the active springs (0 = none) and dt_next_half
+  // = TSSFAC combined_step(element step, contact step).
+  void update_contact_step();
 
   const model::Model& model_;
   State state_;
@@ -91,6 +96,8 @@ class Solver {
   std::vector<contact::RigidWallConstraint> walls_;
   std::vector<contact::InitialPenetrations> initial_penetrations_;
   std::vector<std::string> warnings_;
+  double dt_element_crit_ = 0;              // s, element stable step of the last pass (no TSSFAC)
+  double dt_contact_floor_ = 0;             // s, a priori contact step when stiffer than the elements, else 0
   double gravity_work_ = 0;                // J, work of gravity up to t^n (Σ m g . (x - x0))
   // Element deletion: alive[b][e] (empty vector = all alive) and, per chunk, its alive ranges.
   contact::AliveMask alive_;

@@ -58,7 +58,7 @@ struct State {
   double internal_energy = 0, hourglass_energy = 0, bulk_viscous_energy = 0, external_work = 0;
   double contact_energy = 0, friction_energy = 0, rigidwall_energy = 0;  // at t^n (after the last pass)
   double dt_contact = 0;           // stable step of the stiffest contact spring (no TSSFAC); 0 = none
-  bool dt_contact_controls = false;  // dt_next_half is set by the contact, not by an element
+  bool dt_contact_controls = false;  // the contact frequency exceeds the elements' (it dominates the step)
   double initial_total_energy = 0;
   Energies last_balance;           // the balance at the start of the last step (t^n)
   std::vector<double> reaction;    // (num constrained sets, 3) constraint force resultant, N

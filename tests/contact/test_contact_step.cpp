@@ -1,0 +1,101 @@
+// Contact in the stable time step (solver.cpp combined_step, penalty_contact spring_stable_step):
+// a stiff case, the "penalty far above the element stiffness". Two steel blocks in head-on
+// impact (as test_penalty_contact's HeadOn), SOFT 0 with SFS = SFM = 100: the penalty springs are
+// 100x the default, k = 100 SLSFAC K A^2 / V = 10 K h, against an element stiffness of order
+// (K + 4 G / 3) h, so the contact frequency is several times the element one.
+// Checked against independent answers:
+//  - set-up: the a priori check warns, naming the factor by which the contact frequency exceeds the
+//    element step (the diagnosis), and the factor is > 1;
+//  - stability, by the conservation laws: total momentum stays at its initial value to round-off
+//    (1e-12 of one block's momentum, as HeadOn), and the energy balance stays within the one error
+//    a stiff penalty cannot avoid: a node that crosses the surface during a step lands up to
+//    g = v_rel dt deep in a spring that did not exist a step before, which creates 0.5 k g^2. The
+//    bound sum over the nodes that engage of 0.5 k_max (v_rel dt)^2, relative to the initial
+//    kinetic energy, is computed below (v_rel = 10 m/s closing, dt the step before contact, the
+//    largest number of nodes in contact at once); |ratio - 1| must stay below it over the whole
+//    impact and rebound. An instability would grow geometrically past it (the solver's own guard
+//    stops at a ratio of 1.5). Because the a priori check found the contact stiffer than the
+//    elements, the solver applies the contact step from the start (not only once springs act), so
+//    dt before contact is already the combined step and g small;
+//  - while the springs act, the step never exceeds TSSFAC x the contact step the solver reports:
+//    dt = TSSFAC / sqrt(1 / dt_e^2 + 1 / dt_c^2) < TSSFAC dt_c (the combination, not the element
+//    step alone).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "support.hpp"
+
+namespace plyimpact {
+namespace {
+
+std::string stiff_blocks() {
+  return std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+         "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+         "sections:\n  s: {ELFORM: 2, Q1: 0, Q2: 0}\n"
+         "parts:\n  a: {material: steel, section: s}\n  b: {material: steel, section: s}\n"
+         "mesh:\n  merge_nodes: false\n  boxes:\n"
+         "    - {part: a, origin: [0, 0, 0], size: [0.004, 0.004, 0.004], elements: [2, 2, 2]}\n"
+         "    - {part: b, origin: [0.0005, 0.0005, 0.0042], size: [0.003, 0.003, 0.004], elements: [3, 3, 4]}\n"
+         "initial_velocity:\n  - {part: a, velocity: [0, 0, 5]}\n  - {part: b, velocity: [0, 0, -5]}\n"
+         "contacts:\n  - {name: stiff, type: automatic_surface_to_surface, surfaces: [a, b], SOFT: 0, SFS: 100, "
+         "SFM: 100}\n";
+}
+
+TEST(ContactStep, StiffPenaltyRunsStableWithTheCombinedStep) {
+  const model::Model model = test::model_from_yaml(stiff_blocks(), "stiff_contact.yaml");
+  solver::Solver solver(model);
+  bool warned = false;
+  for (const auto& w : solver.warnings())
+    if (w.find("contact frequency exceeds the element step by") != std::string::npos) {
+      warned = true;
+      std::cout << "warning: " << w << "\n";
+    }
+  EXPECT_TRUE(warned);
+  const auto& c = solver.contacts()[0];
+  const double dt_approach = solver.state().dt_next_half;  // no spring active yet: element step
+  const double tssfac = model.control.tssfac;
+  EXPECT_LT(dt_approach, tssfac * c.stable_step() * (1 + 1e-12)) << "the contact step applies from the start";
+
+  double mass = 0;
+  for (std::size_t i = 0; i < model.num_nodes(); ++i) mass += model.mass[i];
+  const double p_scale = 0.5 * mass * 5.0;
+  double p0[3] = {0, 0, 0};
+  for (std::size_t i = 0; i < model.num_nodes(); ++i)
+    for (int d = 0; d < 3; ++d) p0[d] += model.mass[i] * solver.state().v[3 * i + d];
+  const double ke0 = solver.balance().total();
+  double max_dp = 0, max_ratio_err = 0, dt_min = dt_approach, peak_force = 0;
+  long contact_cycles = 0;
+  std::size_t max_active = 0;
+  bool step_within_contact_bound = true;
+  while (solver.state().time < 3 * 43e-6) {
+    solver.step();
+    double p[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < model.num_nodes(); ++i)
+      for (int d = 0; d < 3; ++d) p[d] += model.mass[i] * solver.state().v[3 * i + d];
+    for (int d = 0; d < 3; ++d) max_dp = std::max(max_dp, std::abs(p[d] - p0[d]));
+    max_active = std::max(max_active, c.forces().active);
+    max_ratio_err = std::max(max_ratio_err, std::abs(solver.energy_ratio() - 1));
+    peak_force = std::max(peak_force, c.forces().normal);
+    if (c.forces().active > 0) {
+      ++contact_cycles;
+      dt_min = std::min(dt_min, solver.state().dt_next_half);
+      // dt = TSSFAC / sqrt(1/dt_e^2 + 1/dt_c^2) < TSSFAC dt_c (round-off allowance 1e-12).
+      if (solver.state().dt_next_half > tssfac * solver.state().dt_contact * (1 + 1e-12))
+        step_within_contact_bound = false;
+    }
+  }
+  const double g = 10.0 * dt_approach;
+  const double entry_bound = double(max_active) * 0.5 * c.stiffness_max() * g * g / ke0;
+  std::cout << "stiff contact: a priori contact step " << c.stable_step() << " s; smallest step in contact " << dt_min << " s (approach "
+            << dt_approach << " s), " << contact_cycles << " cycles in contact, peak normal force " << peak_force
+            << " N, max |dp| / p " << max_dp / p_scale << ", max |ratio - 1| " << max_ratio_err << " (entry-energy bound " << entry_bound << ")\n";
+  EXPECT_GT(contact_cycles, 10);
+  EXPECT_TRUE(step_within_contact_bound);
+  EXPECT_LT(max_dp / p_scale, 1e-12);
+  EXPECT_LT(max_ratio_err, entry_bound);
+}
+
+}  // namespace
+}  // namespace plyimpact
