@@ -228,8 +228,12 @@ std::vector<SectionSpec> read_sections(const Reader& r) {
     SectionSpec spec;
     spec.name = name;
     spec.ELFORM = s.int_choice_or("ELFORM", spec.ELFORM, {1, 2});
-    spec.IHQ = s.int_choice_or("IHQ", spec.IHQ, {1, 2, 3, 4, 5});
-    spec.QM = s.quantity_or("QM", u::dimensionless, spec.QM, Limits::interval(0, true, 0.5, false, "QM"));
+    spec.IHQ = s.int_choice_or("IHQ", spec.IHQ, {1, 2, 3, 4, 5, 6});
+    // IHQ 6 (assumed strain) scales the element's own elastic bending stiffness: QM = 1 is the
+    // physical value (LS-DYNA's recommendation for elastic materials), more would stiffen it.
+    // The Flanagan-Belytschko forms lose stability above ~0.2 (README), hence their cap of 0.5.
+    spec.QM = spec.IHQ == 6 ? s.quantity_or("QM", u::dimensionless, spec.QM, Limits::interval(0, true, 1.0, false, "QM"))
+                            : s.quantity_or("QM", u::dimensionless, spec.QM, Limits::interval(0, true, 0.5, false, "QM"));
     spec.Q1 = s.quantity_or("Q1", u::dimensionless, spec.Q1, Limits::non_negative("Q1"));
     spec.Q2 = s.quantity_or("Q2", u::dimensionless, spec.Q2, Limits::non_negative("Q2"));
     spec.where = s.where();

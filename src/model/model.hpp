@@ -77,7 +77,7 @@ struct ElementBlock {
   int points() const { return elform == 2 ? 8 : 1; }
   HourglassKind hourglass() const {
     if (elform != 1) return HourglassKind::None;
-    return ihq >= 4 ? HourglassKind::Stiffness : HourglassKind::Viscous;
+    return ihq >= 4 ? HourglassKind::Stiffness : HourglassKind::Viscous;  // IHQ 4, 5, 6 accumulate forces
   }
   // IHQ 3 and 5 use the exact (Flanagan-Belytschko) volume and mean gradient.
   bool exact_gradient() const { return elform == 1 && (ihq == 3 || ihq == 5); }

@@ -203,7 +203,8 @@ material::CompositeDamageResult composite_point_update(const material::Composite
   return res;
 }
 
-// ELFORM 1: one-point integration with Flanagan-Belytschko hourglass control. Elements are
+// ELFORM 1: one-point integration with Flanagan-Belytschko hourglass control (IHQ 1-5) or the
+// Belytschko-Bindeman assumed-strain stabilisation (IHQ 6). Elements are
 // processed kLanes at a time: every local quantity is an array over the lanes and every statement a
 // loop over them, which the compiler turns into SIMD instructions (8 doubles per AVX-512 register).
 // The arithmetic per element is exactly that of a one-element-at-a-time loop; a partial last group
@@ -254,7 +255,8 @@ template <MaterialKind M, int IHQ>
 void elform1(const model::Model& model, const model::ElementBlock& blk, BlockState& st, Index begin, Index end,
              const double* __restrict x, const double* __restrict v, double* __restrict f, double dt, ChunkResult& r) {
   constexpr bool kExact = IHQ == 3 || IHQ == 5;
-  constexpr bool kStiffness = IHQ >= 4;
+  constexpr bool kStiffness = IHQ == 4 || IHQ == 5;  // Flanagan-Belytschko stiffness forms
+  constexpr bool kAssumedStrain = IHQ == 6;           // Belytschko-Bindeman assumed strain
   constexpr bool kTotalLagrangian = M == MaterialKind::OrthotropicElastic;
   const model::Material& mat = model.materials[blk.material];
   const double rho0 = mat.density, c = mat.wave_speed, rho_c2 = mat.wave_modulus;
@@ -389,7 +391,7 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     // Incremental rotation (Cayley form of Hughes-Winget), for the hypoelastic stress and the
     // stiffness hourglass forces.
     alignas(64) double R[9][kLanes];
-    if constexpr (!kTotalLagrangian || kStiffness) {  // every incremental material and IHQ 4/5
+    if constexpr (!kTotalLagrangian || kStiffness) {  // every incremental material and IHQ 4/5 (not 6: element frame)
       PLYIMPACT_LANES {
         const double h = 0.5 * dt;
         const double w1 = h * Wax[0][l], w2 = h * Wax[1][l], w3 = h * Wax[2][l];
@@ -566,6 +568,8 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       }
     }
     alignas(64) double Qs[12][kLanes];  // stored hourglass forces of the previous cycle
+    alignas(64) double Qp[3][4][kLanes];  // IHQ 6: new forces in the element frame (stored)
+    (void)Qp;
     for (int l = 0; l < kLanes; ++l)
       for (int i = 0; i < 12; ++i) Qs[i][l] = st.hourglass[12 * std::size_t(elem[l]) + i];
     if constexpr (kStiffness) {
@@ -589,6 +593,77 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
         }
         dHG[l] = e;
       }
+    } else if constexpr (kAssumedStrain) {
+      // IHQ 6, assumed-strain stabilisation after Belytschko & Bindeman (CMAME 105, 1993; also
+      // Belytschko, Liu & Moran, Nonlinear Finite Elements, sec. 8.7, and code_aster R3.06.11), in
+      // the co-rotational element frame x' y' z' (element_frame: orthonormalised centre-Jacobian
+      // columns, half-lengths a b c). Hourglass displacement u_i = sum_alpha q_i,alpha h_alpha with
+      // h = (xi eta, eta zeta, zeta xi, xi eta zeta) for alpha = 0..3 (the kGamma rows); with
+      // gamma . Gamma = 8 the amplitude rate is q' = g'/8 and the generalised force is Q = P/8,
+      // P = dW/dq. Assumed hourglass strains (our derivation of the 3-D field, B&B's principle):
+      // every normal strain is kept, e.g. eps_x'x' = (q_x,2 zeta + q_x,0 eta + q_x,3 eta zeta) / a;
+      // of the shear strains only the parts linear in the third coordinate are kept,
+      //   gamma_x'y' = zeta (q_x,1 / b + q_y,2 / a), gamma_y'z' = xi (q_y,2 / c + q_z,0 / b),
+      //   gamma_z'x' = eta (q_z,0 / a + q_x,1 / c)
+      // (twist, which a plate really carries); the others, e.g. xi q_x,2 / c in gamma_z'x' of a
+      // bent thin element, are the parasitic shear that locks bending and are dropped. All 12
+      // modes keep stiffness (the three shear-coupled ones form a positive definite 3x3 block).
+      // Integrated over the element (mean of zeta^2: 1/3, of (eta zeta)^2: 1/9) with the per-mode
+      // moduli of assumed_strain_hourglass.hpp this gives W = sum QM V/6 [E (q/a)^2 for the
+      // linear terms, E/3 (q/a)^2 for xi eta zeta, G (shear)^2], exact pure bending of a
+      // rectangular element. Forces are accumulated in the element frame (stored), so a rigid
+      // rotation carries them exactly; the global forces are E^T Q'.
+      alignas(64) double Hm[6][kLanes], Ef[9][kLanes], ha[kLanes], hb[kLanes], hc[kLanes];
+      for (int l = 0; l < kLanes; ++l)
+        for (int i = 0; i < 6; ++i) Hm[i][l] = st.hourglass_moduli[6 * std::size_t(elem[l]) + i];
+      PLYIMPACT_LANES {
+        // element_frame, inlined (a call per lane would not vectorise).
+        const double c0x = Jx[0][l], c0y = Jx[3][l], c0z = Jx[6][l];
+        const double c1x = Jx[1][l], c1y = Jx[4][l], c1z = Jx[7][l];
+        const double a = std::sqrt(c0x * c0x + c0y * c0y + c0z * c0z), ra = 1.0 / a;
+        const double e1x = c0x * ra, e1y = c0y * ra, e1z = c0z * ra;
+        const double p = e1x * c1x + e1y * c1y + e1z * c1z;
+        const double ux = c1x - p * e1x, uy = c1y - p * e1y, uz = c1z - p * e1z;
+        const double bl = std::sqrt(ux * ux + uy * uy + uz * uz), rb = 1.0 / bl;
+        const double e2x = ux * rb, e2y = uy * rb, e2z = uz * rb;
+        const double e3x = e1y * e2z - e1z * e2y, e3y = e1z * e2x - e1x * e2z, e3z = e1x * e2y - e1y * e2x;
+        Ef[0][l] = e1x, Ef[1][l] = e1y, Ef[2][l] = e1z;
+        Ef[3][l] = e2x, Ef[4][l] = e2y, Ef[5][l] = e2z;
+        Ef[6][l] = e3x, Ef[7][l] = e3y, Ef[8][l] = e3z;
+        ha[l] = a, hb[l] = bl, hc[l] = e3x * Jx[2][l] + e3y * Jx[5][l] + e3z * Jx[8][l];
+      }
+      alignas(64) double gp[3][4][kLanes];  // g in the element frame
+      for (int j = 0; j < 3; ++j)
+        for (int a = 0; a < 4; ++a)
+          PLYIMPACT_LANES gp[j][a][l] = Ef[3 * j][l] * g[0][a][l] + Ef[3 * j + 1][l] * g[1][a][l] + Ef[3 * j + 2][l] * g[2][a][l];
+      PLYIMPACT_LANES {
+        // Amplitude increments d = g' dt / 8; force increments dQ' = dP'/8 = k (...), k = QM V / 24.
+        const double d8 = 0.125 * dt, k = qm * V[l] * (1.0 / 24.0);
+        const double ia = 1.0 / ha[l], ib = 1.0 / hb[l], ic = 1.0 / hc[l];
+        const double kx = k * Hm[0][l] * ia * ia, ky = k * Hm[1][l] * ib * ib, kz = k * Hm[2][l] * ic * ic;
+        const double dx1 = gp[0][1][l] * d8, dy2 = gp[1][2][l] * d8, dz0 = gp[2][0][l] * d8;
+        const double sxy = dx1 * ib + dy2 * ia, syz = dy2 * ic + dz0 * ib, szx = dz0 * ia + dx1 * ic;
+        const double gxy = k * Hm[3][l] * sxy, gyz = k * Hm[4][l] * syz, gzx = k * Hm[5][l] * szx;
+        Qp[0][0][l] = Qs[0][l] + kx * gp[0][0][l] * d8;
+        Qp[0][1][l] = Qs[1][l] + gxy * ib + gzx * ic;
+        Qp[0][2][l] = Qs[2][l] + kx * gp[0][2][l] * d8;
+        Qp[0][3][l] = Qs[3][l] + (1.0 / 3.0) * kx * gp[0][3][l] * d8;
+        Qp[1][0][l] = Qs[4][l] + ky * gp[1][0][l] * d8;
+        Qp[1][1][l] = Qs[5][l] + ky * gp[1][1][l] * d8;
+        Qp[1][2][l] = Qs[6][l] + gxy * ia + gyz * ic;
+        Qp[1][3][l] = Qs[7][l] + (1.0 / 3.0) * ky * gp[1][3][l] * d8;
+        Qp[2][0][l] = Qs[8][l] + gyz * ib + gzx * ia;
+        Qp[2][1][l] = Qs[9][l] + kz * gp[2][1][l] * d8;
+        Qp[2][2][l] = Qs[10][l] + kz * gp[2][2][l] * d8;
+        Qp[2][3][l] = Qs[11][l] + (1.0 / 3.0) * kz * gp[2][3][l] * d8;
+        double e = 0;  // trapezoid rule, as IHQ 4/5 (the power Q . g is frame invariant)
+        for (int j = 0; j < 3; ++j)
+          for (int a = 0; a < 4; ++a) e += 0.5 * (Qs[4 * j + a][l] + Qp[j][a][l]) * gp[j][a][l] * dt;
+        dHG[l] = e;
+      }
+      for (int i = 0; i < 3; ++i)
+        for (int a = 0; a < 4; ++a)
+          PLYIMPACT_LANES Qh[i][a][l] = Ef[i][l] * Qp[0][a][l] + Ef[3 + i][l] * Qp[1][a][l] + Ef[6 + i][l] * Qp[2][a][l];
     } else {
       alignas(64) double ah[kLanes];
       PLYIMPACT_LANES ah[l] = 0.25 * qm * rho[l] * cbrtV[l] * cbrtV[l] * c;
@@ -641,7 +716,8 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       st.volume[e] = V[l];
       for (int i = 0; i < 6; ++i) st.stress[6 * std::size_t(e) + i] = s[i][l];
       for (int i = 0; i < 3; ++i)
-        for (int a = 0; a < 4; ++a) st.hourglass[12 * std::size_t(e) + 4 * i + a] = Qh[i][a][l];
+        for (int a = 0; a < 4; ++a)
+          st.hourglass[12 * std::size_t(e) + 4 * i + a] = kAssumedStrain ? Qp[i][a][l] : Qh[i][a][l];
       st.bulk_q[e] = q[l];
       st.internal_energy[e] += dIE[l];
       st.hourglass_energy[e] += dHG[l];
@@ -826,6 +902,7 @@ void dispatch_material(const model::Model& model, const model::ElementBlock& blk
     case 2: return elform1<M, 2>(model, blk, st, begin, end, x, v, f, dt, r);
     case 3: return elform1<M, 3>(model, blk, st, begin, end, x, v, f, dt, r);
     case 4: return elform1<M, 4>(model, blk, st, begin, end, x, v, f, dt, r);
+    case 6: return elform1<M, 6>(model, blk, st, begin, end, x, v, f, dt, r);
     default: return elform1<M, 5>(model, blk, st, begin, end, x, v, f, dt, r);
   }
 }

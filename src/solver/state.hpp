@@ -13,9 +13,12 @@ namespace plyimpact::solver {
 
 struct BlockState {
   std::vector<double> stress;            // (num_elements * points, 6) Cauchy, global axes, xx yy zz xy yz zx
-  // (num_elements, 12) hourglass forces Q[i*4+alpha]: accumulated (IHQ 4, 5) or last viscous (IHQ 1-3);
+  // (num_elements, 12) hourglass forces Q[i*4+alpha]: accumulated (IHQ 4, 5; global axes i),
+  // accumulated in the co-rotational element frame (IHQ 6; element axes i) or last viscous (IHQ 1-3);
   // the viscous ones are kept so their work is booked with the trapezoid rule.
   std::vector<double> hourglass;
+  // (num_elements, 6) IHQ 6 moduli E_x', E_y', E_z', G_x'y', G_y'z', G_z'x' (solver/assumed_strain_hourglass).
+  std::vector<double> hourglass_moduli;
   std::vector<double> bulk_q;            // (num_elements) last bulk-viscosity pressure q, Pa (trapezoid work)
   std::vector<double> internal_energy;   // (num_elements) J, stress work incl. nothing of q
   std::vector<double> hourglass_energy;  // (num_elements) J

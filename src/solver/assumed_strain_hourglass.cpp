@@ -1,0 +1,124 @@
+#include "solver/assumed_strain_hourglass.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "element/hex8.hpp"
+
+namespace plyimpact::solver {
+
+namespace {
+
+// Compliance of an orthotropic material in its axes: normal block S[a][c] (1/E_a on the diagonal,
+// -nu_ac/E_a off it) and the inverse shear moduli 1/G_ab, 1/G_bc, 1/G_ca (Voigt order ab, bc, ca).
+struct Compliance {
+  double S[3][3] = {};
+  double invG[3] = {};
+};
+
+Compliance isotropic_compliance(double lambda, double mu) {
+  const double E = mu * (3 * lambda + 2 * mu) / (lambda + mu), nu = lambda / (2 * (lambda + mu));
+  Compliance c;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) c.S[a][b] = a == b ? 1 / E : -nu / E;
+  for (double& g : c.invG) g = 1 / mu;
+  return c;
+}
+
+// From a stiffness in material axes (orthotropic: no normal-shear coupling): invert the normal
+// 3x3 block; the shear moduli are the diagonal shear entries.
+Compliance orthotropic_compliance(const material::Stiffness6& C) {
+  const double m[9] = {C[0], C[1], C[2], C[6], C[7], C[8], C[12], C[13], C[14]};
+  double inv[9];
+  element::inverse3(m, inv);
+  Compliance c;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) c.S[a][b] = inv[3 * a + b];
+  c.invG[0] = 1 / C[21], c.invG[1] = 1 / C[28], c.invG[2] = 1 / C[35];
+  return c;
+}
+
+// 1/E(n) = sum_ac S_ac n_a^2 n_c^2 + sum_{a<b} n_a^2 n_b^2 / G_ab (n in material axes).
+double inverse_young(const Compliance& c, const double n[3]) {
+  double s = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) s += c.S[a][b] * n[a] * n[a] * n[b] * n[b];
+  constexpr int kPair[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  for (int p = 0; p < 3; ++p) s += n[kPair[p][0]] * n[kPair[p][0]] * n[kPair[p][1]] * n[kPair[p][1]] * c.invG[p];
+  return s;
+}
+
+// 1/G(n, m) = 4 sum_ac S_ac p_a p_c + sum_{a<b} (n_a m_b + n_b m_a)^2 / G_ab, p_a = n_a m_a.
+double inverse_shear(const Compliance& c, const double n[3], const double m[3]) {
+  double s = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) s += 4 * c.S[a][b] * n[a] * m[a] * n[b] * m[b];
+  constexpr int kPair[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  for (int p = 0; p < 3; ++p) {
+    const int a = kPair[p][0], b = kPair[p][1];
+    const double t = n[a] * m[b] + n[b] * m[a];
+    s += t * t * c.invG[p];
+  }
+  return s;
+}
+
+}  // namespace
+
+void element_frame(const double J[9], double E[9], double half[3]) {
+  const double c0[3] = {J[0], J[3], J[6]}, c1[3] = {J[1], J[4], J[7]}, c2[3] = {J[2], J[5], J[8]};
+  const double a = std::sqrt(c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2]);
+  for (int i = 0; i < 3; ++i) E[i] = c0[i] / a;
+  const double p = E[0] * c1[0] + E[1] * c1[1] + E[2] * c1[2];
+  double u[3] = {c1[0] - p * E[0], c1[1] - p * E[1], c1[2] - p * E[2]};
+  const double b = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+  for (int i = 0; i < 3; ++i) E[3 + i] = u[i] / b;
+  E[6] = E[1] * E[5] - E[2] * E[4];
+  E[7] = E[2] * E[3] - E[0] * E[5];
+  E[8] = E[0] * E[4] - E[1] * E[3];
+  half[0] = a, half[1] = b, half[2] = E[6] * c2[0] + E[7] * c2[1] + E[8] * c2[2];
+}
+
+std::vector<double> assumed_strain_moduli(const model::Model& model, const model::ElementBlock& block) {
+  const model::Material& mat = model.materials[block.material];
+  Compliance comp;
+  switch (mat.kind) {
+    case model::MaterialKind::IsotropicElastic: comp = isotropic_compliance(mat.iso.lambda, mat.iso.mu); break;
+    case model::MaterialKind::Plastic: comp = isotropic_compliance(mat.plastic.lambda, mat.plastic.shear); break;
+    case model::MaterialKind::OrthotropicElastic: comp = orthotropic_compliance(mat.c_material); break;
+    case model::MaterialKind::CompositeDamage: comp = orthotropic_compliance(mat.composite.C); break;
+    default: throw std::logic_error("IHQ 6: material '" + mat.name + "' has no elastic constants");
+  }
+  std::vector<double> out(6 * block.size());
+  for (std::size_t e = 0; e < block.size(); ++e) {
+    double J[9] = {};
+    for (int k = 0; k < 8; ++k) {
+      const double* X = &model.X[3 * std::size_t(block.conn[8 * e + k])];
+      for (int i = 0; i < 3; ++i) {
+        J[3 * i] += 0.125 * X[i] * element::kXi[k];
+        J[3 * i + 1] += 0.125 * X[i] * element::kEta[k];
+        J[3 * i + 2] += 0.125 * X[i] * element::kZeta[k];
+      }
+    }
+    double F[9], half[3];
+    element_frame(J, F, half);
+    // Element axes in material axes: n_a = (material axis a) . e_i; identity axes when isotropic.
+    double n[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int a = 0; a < 3; ++a) {
+        if (mat.has_axes()) {
+          const auto& Q = model.orientations[block.orientation[e]].axes;
+          n[i][a] = Q[3 * a] * F[3 * i] + Q[3 * a + 1] * F[3 * i + 1] + Q[3 * a + 2] * F[3 * i + 2];
+        } else {
+          n[i][a] = F[3 * i + a];
+        }
+      }
+    double* m = &out[6 * e];
+    for (int i = 0; i < 3; ++i) m[i] = 1 / inverse_young(comp, n[i]);
+    m[3] = 1 / inverse_shear(comp, n[0], n[1]);
+    m[4] = 1 / inverse_shear(comp, n[1], n[2]);
+    m[5] = 1 / inverse_shear(comp, n[2], n[0]);
+  }
+  return out;
+}
+
+}  // namespace plyimpact::solver
