@@ -3,19 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "core/voigt.hpp"
+
 namespace plyimpact::material {
 
 namespace {
-
-// t <- R t R^T for a symmetric tensor in Voigt order.
-void rotate(const double R[9], double t[6]) {
-  const double T[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
-  double RT[9];
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) RT[3 * i + j] = R[3 * i] * T[j] + R[3 * i + 1] * T[3 + j] + R[3 * i + 2] * T[6 + j];
-  auto at = [&](int i, int j) { return RT[3 * i] * R[3 * j] + RT[3 * i + 1] * R[3 * j + 1] + RT[3 * i + 2] * R[3 * j + 2]; };
-  t[0] = at(0, 0), t[1] = at(1, 1), t[2] = at(2, 2), t[3] = at(0, 1), t[4] = at(1, 2), t[5] = at(2, 0);
-}
 
 double contract(const double a[6], const double b[6]) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + 2 * (a[3] * b[3] + a[4] * b[4] + a[5] * b[5]);
@@ -82,8 +74,8 @@ PlasticityResult plasticity_update(const PlasticityParams& p, const double R[9],
                                    double stress[6], double history[kPlasticityHistory]) {
   PlasticityResult result;
   double* alpha = history + 1;
-  rotate(R, stress);
-  rotate(R, alpha);
+  rotate_voigt(R, stress, stress);
+  rotate_voigt(R, alpha, alpha);
   // Elastic trial stress.
   const double tr = (D[0] + D[1] + D[2]) * dt;
   for (int i = 0; i < 3; ++i) stress[i] += p.lambda * tr + 2 * p.shear * D[i] * dt;

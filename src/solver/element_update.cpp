@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "core/voigt.hpp"
 #include "element/hex8.hpp"
 #include "material/composite_damage.hpp"
 #include "material/plasticity.hpp"
@@ -41,24 +42,9 @@ inline void hughes_winget(const double W[9], double dt, double R[9]) {
   R[8] = 1 + c * (w3 * w3 - ww);
 }
 
-// sigma <- R sigma R^T
-inline void rotate_stress(const double R[9], double s[6]) {
-  const double S[9] = {s[0], s[3], s[5], s[3], s[1], s[4], s[5], s[4], s[2]};
-  double T[9];  // R S
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) T[3 * i + j] = R[3 * i] * S[j] + R[3 * i + 1] * S[3 + j] + R[3 * i + 2] * S[6 + j];
-  auto rsr = [&](int i, int j) { return T[3 * i] * R[3 * j] + T[3 * i + 1] * R[3 * j + 1] + T[3 * i + 2] * R[3 * j + 2]; };
-  s[0] = rsr(0, 0);
-  s[1] = rsr(1, 1);
-  s[2] = rsr(2, 2);
-  s[3] = rsr(0, 1);
-  s[4] = rsr(1, 2);
-  s[5] = rsr(2, 0);
-}
-
 // Hypoelastic isotropic update with the rotation R and the strain increment D dt.
 inline void isotropic_update(const double R[9], const double D[6], double dt, double lambda, double mu, double s[6]) {
-  rotate_stress(R, s);
+  rotate_voigt(R, s, s);
   const double tr = (D[0] + D[1] + D[2]) * dt;
   s[0] += lambda * tr + 2 * mu * D[0] * dt;
   s[1] += lambda * tr + 2 * mu * D[1] * dt;
@@ -177,18 +163,10 @@ material::CompositeDamageResult composite_point_update(const material::Composite
                                                        const double Qn[9], const double D[6], double dt,
                                                        const material::CompositeDamageContext& ctx, double s[6],
                                                        double* history) {
-  auto to_axes = [](const double* Q, const double t[6], double out[6]) {
-    const double T[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
-    double QT[9];
-    for (int a = 0; a < 3; ++a)
-      for (int j = 0; j < 3; ++j) QT[3 * a + j] = Q[3 * a] * T[j] + Q[3 * a + 1] * T[3 + j] + Q[3 * a + 2] * T[6 + j];
-    auto qtq = [&](int a, int b) { return QT[3 * a] * Q[3 * b] + QT[3 * a + 1] * Q[3 * b + 1] + QT[3 * a + 2] * Q[3 * b + 2]; };
-    out[0] = qtq(0, 0), out[1] = qtq(1, 1), out[2] = qtq(2, 2), out[3] = qtq(0, 1), out[4] = qtq(1, 2), out[5] = qtq(2, 0);
-  };
   double sm[6], de[6], dm[6];
   for (int i = 0; i < 6; ++i) de[i] = D[i] * dt;
-  to_axes(Qo, s, sm);
-  to_axes(Qn, de, dm);
+  rotate_voigt(Qo, s, sm);  // stress in the old material axes
+  rotate_voigt(Qn, de, dm);  // strain increment in the new ones
   for (int i = 3; i < 6; ++i) dm[i] *= 2;  // engineering shear
   const auto res = material::composite_damage_update(p, dm, sm, history, ctx);
   const double Sm[9] = {sm[0], sm[3], sm[5], sm[3], sm[1], sm[4], sm[5], sm[4], sm[2]};
