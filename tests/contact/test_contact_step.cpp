@@ -25,26 +25,14 @@
 #include <cmath>
 #include <iostream>
 
+#include "head_on_blocks.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
 namespace {
 
-std::string stiff_blocks() {
-  return std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
-         "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
-         "sections:\n  s: {ELFORM: 2, Q1: 0, Q2: 0}\n"
-         "parts:\n  a: {material: steel, section: s}\n  b: {material: steel, section: s}\n"
-         "mesh:\n  merge_nodes: false\n  boxes:\n"
-         "    - {part: a, origin: [0, 0, 0], size: [0.004, 0.004, 0.004], elements: [2, 2, 2]}\n"
-         "    - {part: b, origin: [0.0005, 0.0005, 0.0042], size: [0.003, 0.003, 0.004], elements: [3, 3, 4]}\n"
-         "initial_velocity:\n  - {part: a, velocity: [0, 0, 5]}\n  - {part: b, velocity: [0, 0, -5]}\n"
-         "contacts:\n  - {name: stiff, type: automatic_surface_to_surface, surfaces: [a, b], SOFT: 0, SFS: 100, "
-         "SFM: 100}\n";
-}
-
 TEST(ContactStep, StiffPenaltyRunsStableWithTheCombinedStep) {
-  const model::Model model = test::model_from_yaml(stiff_blocks(), "stiff_contact.yaml");
+  const model::Model model = test::model_from_yaml(test::head_on_blocks("SOFT: 0, SFS: 100, SFM: 100"), "stiff_contact.yaml");
   solver::Solver solver(model);
   bool warned = false;
   for (const auto& w : solver.warnings())
