@@ -64,20 +64,6 @@ double inverse_shear(const Compliance& c, const double n[3], const double m[3]) 
 
 }  // namespace
 
-void element_frame(const double J[9], double E[9], double half[3]) {
-  const double c0[3] = {J[0], J[3], J[6]}, c1[3] = {J[1], J[4], J[7]}, c2[3] = {J[2], J[5], J[8]};
-  const double a = std::sqrt(c0[0] * c0[0] + c0[1] * c0[1] + c0[2] * c0[2]);
-  for (int i = 0; i < 3; ++i) E[i] = c0[i] / a;
-  const double p = E[0] * c1[0] + E[1] * c1[1] + E[2] * c1[2];
-  double u[3] = {c1[0] - p * E[0], c1[1] - p * E[1], c1[2] - p * E[2]};
-  const double b = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-  for (int i = 0; i < 3; ++i) E[3 + i] = u[i] / b;
-  E[6] = E[1] * E[5] - E[2] * E[4];
-  E[7] = E[2] * E[3] - E[0] * E[5];
-  E[8] = E[0] * E[4] - E[1] * E[3];
-  half[0] = a, half[1] = b, half[2] = E[6] * c2[0] + E[7] * c2[1] + E[8] * c2[2];
-}
-
 std::vector<double> assumed_strain_moduli(const model::Model& model, const model::ElementBlock& block) {
   const model::Material& mat = model.materials[block.material];
   Compliance comp;
@@ -90,17 +76,19 @@ std::vector<double> assumed_strain_moduli(const model::Model& model, const model
   }
   std::vector<double> out(6 * block.size());
   for (std::size_t e = 0; e < block.size(); ++e) {
-    double J[9] = {};
+    double J[9][1] = {};
     for (int k = 0; k < 8; ++k) {
       const double* X = &model.X[3 * std::size_t(block.conn[8 * e + k])];
       for (int i = 0; i < 3; ++i) {
-        J[3 * i] += 0.125 * X[i] * element::kXi[k];
-        J[3 * i + 1] += 0.125 * X[i] * element::kEta[k];
-        J[3 * i + 2] += 0.125 * X[i] * element::kZeta[k];
+        J[3 * i][0] += 0.125 * X[i] * element::kXi[k];
+        J[3 * i + 1][0] += 0.125 * X[i] * element::kEta[k];
+        J[3 * i + 2][0] += 0.125 * X[i] * element::kZeta[k];
       }
     }
-    double F[9], half[3];
-    element_frame(J, F, half);
+    double Ef[9][1], ha[1], hb[1], hc[1];
+    element_frame(J, 0, Ef, ha, hb, hc);
+    double F[9];
+    for (int i = 0; i < 9; ++i) F[i] = Ef[i][0];
     // Element axes in material axes: n_a = (material axis a) . e_i; identity axes when isotropic.
     double n[3][3];
     for (int i = 0; i < 3; ++i)

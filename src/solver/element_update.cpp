@@ -14,6 +14,7 @@
 #include "element/hex8.hpp"
 #include "material/composite_damage.hpp"
 #include "material/plasticity.hpp"
+#include "solver/assumed_strain_hourglass.hpp"
 
 namespace plyimpact::solver {
 
@@ -594,22 +595,7 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       alignas(64) double Hm[6][kLanes], Ef[9][kLanes], ha[kLanes], hb[kLanes], hc[kLanes];
       for (int l = 0; l < kLanes; ++l)
         for (int i = 0; i < 6; ++i) Hm[i][l] = st.hourglass_moduli[6 * std::size_t(elem[l]) + i];
-      PLYIMPACT_LANES {
-        // element_frame, inlined (a call per lane would not vectorise).
-        const double c0x = Jx[0][l], c0y = Jx[3][l], c0z = Jx[6][l];
-        const double c1x = Jx[1][l], c1y = Jx[4][l], c1z = Jx[7][l];
-        const double a = std::sqrt(c0x * c0x + c0y * c0y + c0z * c0z), ra = 1.0 / a;
-        const double e1x = c0x * ra, e1y = c0y * ra, e1z = c0z * ra;
-        const double p = e1x * c1x + e1y * c1y + e1z * c1z;
-        const double ux = c1x - p * e1x, uy = c1y - p * e1y, uz = c1z - p * e1z;
-        const double bl = std::sqrt(ux * ux + uy * uy + uz * uz), rb = 1.0 / bl;
-        const double e2x = ux * rb, e2y = uy * rb, e2z = uz * rb;
-        const double e3x = e1y * e2z - e1z * e2y, e3y = e1z * e2x - e1x * e2z, e3z = e1x * e2y - e1y * e2x;
-        Ef[0][l] = e1x, Ef[1][l] = e1y, Ef[2][l] = e1z;
-        Ef[3][l] = e2x, Ef[4][l] = e2y, Ef[5][l] = e2z;
-        Ef[6][l] = e3x, Ef[7][l] = e3y, Ef[8][l] = e3z;
-        ha[l] = a, hb[l] = bl, hc[l] = e3x * Jx[2][l] + e3y * Jx[5][l] + e3z * Jx[8][l];
-      }
+      PLYIMPACT_LANES element_frame(Jx, l, Ef, ha, hb, hc);
       alignas(64) double gp[3][4][kLanes];  // g in the element frame
       for (int j = 0; j < 3; ++j)
         for (int a = 0; a < 4; ++a)

@@ -123,18 +123,19 @@ Solver::Solver(const model::Model& model) : model_(model) {
     }
   if (std::isfinite(dt_apriori)) {
     const double dt_e = dt_element_crit_, tssfac = model.control.tssfac;
-    const double dt_combined = tssfac * combined_step(dt_e, dt_apriori);
     // Stiffer than the elements: the springs' step applies from the start, not only once they act,
     // so the first contact step cannot drive a node a whole element step deep into a stiff spring
     // (0.5 k g^2 created from nothing, more than the impact energy at 100x the default penalty).
-    if (dt_apriori < dt_e) dt_contact_floor_ = dt_apriori;
-    if (dt_apriori < dt_e)
+    if (dt_apriori < dt_e) {
+      dt_contact_floor_ = dt_apriori;
+      const double dt_combined = tssfac * combined_step(dt_e, dt_apriori);
       warnings_.push_back(msg() << "contact '" << stiffest << "': the contact frequency exceeds the element step by "
                                 << dt_e / dt_apriori << " x (stiffest penalty spring 2/omega = " << dt_apriori
                                 << " s, elements " << dt_e << " s); while it is in contact the combined stable "
                                 << "step reduces the time step from " << tssfac * dt_e << " s to about "
                                 << dt_combined << " s (TSSFAC applied). Lower SLSFAC/SFS/SFM or use SOFT 1 to keep "
                                 << "the element step");
+    }
   }
   external_and_contact_forces(0.0);
 
