@@ -1,7 +1,9 @@
 #include "contact/penalty_contact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 
 #include "element/hex8.hpp"
 
@@ -34,6 +36,9 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
     history.push_back({2 * sn_node_[i] + sn_side_[i],
                        {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i],
                         sn_segment_[i] >= 0 ? 1.0 : 0.0}});
+  // The segment each node was in contact with, by its sorted nodes and side (indices change).
+  std::vector<std::array<Index, 5>> history_segment;
+  for (std::size_t i = 0; i < sn_node_.size(); ++i) history_segment.push_back(segment_key(sn_segment_[i]));
   std::vector<std::pair<Index, std::array<double, 3>>> old_forces;
   for (std::size_t u = 0; u < union_nodes_.size(); ++u)
     old_forces.push_back({union_nodes_[u], {fc_prev_[3 * u], fc_prev_[3 * u + 1], fc_prev_[3 * u + 2]}});
@@ -156,6 +161,15 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
       sn_offset_[i] = h[3];
       sn_engaged_[i] = h[5] > 0;
     }
+    // The segment of the last pass, where it survived: its neighbours keep the full release depth
+    // (find_segment), so a node pressed into the surface is not released by an erosion elsewhere.
+    std::map<std::array<Index, 5>, long> segment_of;
+    for (std::size_t s = 0; s < S; ++s) segment_of.emplace(segment_key(long(s)), long(s));
+    for (std::size_t h = 0; h < history.size(); ++h) {
+      const Index i = slave_of[std::size_t(history[h].first)];
+      if (i < 0 || history_segment[h][0] < 0) continue;
+      if (auto it = segment_of.find(history_segment[h]); it != segment_of.end()) sn_segment_[std::size_t(i)] = it->second;
+    }
   }
 
   // Union of all force-carrying nodes.
@@ -225,6 +239,15 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   search_cell_ = cell_;
   estimate_stiffness_range();
   sort(x.data());
+}
+
+std::array<Index, 5> PenaltyContact::segment_key(long s) const {
+  std::array<Index, 5> key{-1, -1, -1, -1, -1};
+  if (s < 0) return key;
+  key[0] = Index(seg_side_[std::size_t(s)]);
+  for (int k = 0; k < 4; ++k) key[std::size_t(k) + 1] = seg_nodes_[4 * std::size_t(s) + std::size_t(k)];
+  std::sort(key.begin() + 1, key.end());
+  return key;
 }
 
 void PenaltyContact::estimate_stiffness_range() {
@@ -427,17 +450,28 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
   const double r_factor = 1 + 2 * std::max(def_.spec.MAXPAR - 1, 0.0);
   long best_s = -1;
   double best_g = 0;
+  // Nodes of the segment of the last pass (-1: none). A node in contact slides from its segment to
+  // a neighbour (one sharing a node with it) at the depth it has, so the neighbour keeps the full
+  // release depth; with the new-contact depth there, a node pressed deeper than it was released at
+  // every segment boundary it slid across (Hertz: the contact area grows under the sphere).
+  Index ln[4] = {-1, -1, -1, -1};
+  if (last >= 0)
+    for (int k = 0; k < 4; ++k) ln[k] = seg_nodes_[4 * std::size_t(last) + std::size_t(k)];
   auto consider = [&](Index s) {
     const double* sg = &seg_geo_[kGeo * std::size_t(s)];
-    // Full release depth only on the segment the node was already in contact with.
+    const Index* q = &seg_nodes_[4 * std::size_t(s)];
+    bool near_last = false;
+    if (last >= 0)
+      for (int a = 0; a < 4; ++a)
+        near_last = near_last || q[a] == ln[0] || q[a] == ln[1] || q[a] == ln[2] || q[a] == ln[3];
+    // Full release depth on the segment the node was in contact with and on its neighbours.
     const double accept =
-        s == last ? seg_depth_[s] : std::min(seg_depth_[s], new_contact_depth + 0.02 * seg_depth_[s]);
+        near_last ? seg_depth_[s] : std::min(seg_depth_[s], new_contact_depth + 0.02 * seg_depth_[s]);
     // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, and it can
     // only beat the best so far if it is less penetrated, |g| < |g_best|.
     const double dx = p[0] - sg[0], dy = p[1] - sg[1], dz = p[2] - sg[2];
     const double reach = r_factor * sg[3] + (best_s >= 0 ? std::min(accept, -best_g) : accept);
     if (dx * dx + dy * dy + dz * dz > reach * reach) return;
-    const Index* q = &seg_nodes_[4 * std::size_t(s)];
     if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) return;
     if (single_) {
       const Index* o = &seg_owner_[8 * std::size_t(s)];

@@ -25,6 +25,7 @@
 // does not depend on the thread count.
 #pragma once
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -99,6 +100,8 @@ class PenaltyContact {
   // "penetration" is a node beside an edge projecting onto a side face, not a real one).
   long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth) const;
   void estimate_stiffness_range();
+  // Identity of segment s across a rebuild: side and sorted nodes; all -1 for s < 0.
+  std::array<Index, 5> segment_key(long s) const;
   // Search data of segment s at x (seg_geo_): bilinear coefficients, bounding sphere, normal bound.
   void refresh_segment(std::size_t s, const double* x);
   // Per-cycle refresh of the segments some node can reach (refresh_segs_) and the node normals of
