@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <map>
 
 #include "element/hex8.hpp"
@@ -87,6 +88,7 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   if (!single_) add_side(def_.b, builder_b_, 1);
   const std::size_t S = seg_side_.size();
   seg_geo_.assign(kGeo * S, 0.0);
+  for (std::size_t s = 0; s < S; ++s) seg_geo_[kGeo * s + 7] = seg_depth_[s];  // constant; the rest per pass
   seg_flag_.assign(S, 0);
   for (auto& ids : side_segs_) ids.clear();
   for (std::size_t s = 0; s < S; ++s) side_segs_[single_ ? 0 : seg_side_[s]].push_back(Index(s));
@@ -409,7 +411,7 @@ void PenaltyContact::build_candidates(const double* x) {
       const std::size_t s = std::size_t(ids[std::size_t(k)]);
       const double* g = &seg_geo_[kGeo * s];
       const double dx = p[0] - g[0], dy = p[1] - g[1], dz = p[2] - g[2];
-      const double reach = r_factor * (g[3] + half_a) + seg_depth_[s] + half_a;
+      const double reach = r_factor * (g[3] + half_a) + g[7] + half_a;
       if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
       cand_.push_back(Index(s));
       seg_flag_[s] |= 1;
@@ -445,6 +447,8 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
   const double* p = &x[3 * std::size_t(node)];
   const double* nn = &sn_normal_[3 * i];
   const double nn_len = std::sqrt(dot3(nn, nn));
+  // The in-plane pre-check assumes |gap| <= release depth, i.e. no initial-penetration offset.
+  const bool plain = sn_offset_[i] == 0;
   // Distance from the closest point to the node beyond |g|: the tangential overshoot of a
   // projection clamped to the edge, at most (MAXPAR - 1) x the longest edge <= 2 r (MAXPAR - 1).
   const double r_factor = 1 + 2 * std::max(def_.spec.MAXPAR - 1, 0.0);
@@ -457,21 +461,30 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
   Index ln[4] = {-1, -1, -1, -1};
   if (last >= 0)
     for (int k = 0; k < 4; ++k) ln[k] = seg_nodes_[4 * std::size_t(last) + std::size_t(k)];
-  auto consider = [&](Index s) {
+  auto shares_node_with_last = [&](const Index* q) {
+    bool near = false;
+    for (int a = 0; a < 4; ++a) near = near || q[a] == ln[0] || q[a] == ln[1] || q[a] == ln[2] || q[a] == ln[3];
+    return near;
+  };
+  auto consider = [&](Index s) __attribute__((always_inline)) {  // inlined: ~6 candidates per node
     const double* sg = &seg_geo_[kGeo * std::size_t(s)];
-    const Index* q = &seg_nodes_[4 * std::size_t(s)];
-    bool near_last = false;
-    if (last >= 0)
-      for (int a = 0; a < 4; ++a)
-        near_last = near_last || q[a] == ln[0] || q[a] == ln[1] || q[a] == ln[2] || q[a] == ln[3];
-    // Full release depth on the segment the node was in contact with and on its neighbours.
-    const double accept =
-        near_last ? seg_depth_[s] : std::min(seg_depth_[s], new_contact_depth + 0.02 * seg_depth_[s]);
-    // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, and it can
-    // only beat the best so far if it is less penetrated, |g| < |g_best|.
+    // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, |g| below
+    // the accepted depth, and it can only beat the best so far if it is less penetrated,
+    // |g| < |g_best|. Full release depth on the segment the node was in contact with and on its
+    // neighbours; the new-contact depth elsewhere (tested first: most candidates fail it).
+    const double depth = sg[7];
     const double dx = p[0] - sg[0], dy = p[1] - sg[1], dz = p[2] - sg[2];
-    const double reach = r_factor * sg[3] + (best_s >= 0 ? std::min(accept, -best_g) : accept);
-    if (dx * dx + dy * dy + dz * dz > reach * reach) return;
+    const double d2 = dx * dx + dy * dy + dz * dz, r = r_factor * sg[3];
+    auto reach = [&](double accept) { return r + (best_s >= 0 ? std::min(accept, -best_g) : accept); };
+    const Index* q = &seg_nodes_[4 * std::size_t(s)];
+    double accept = std::min(depth, new_contact_depth + 0.02 * depth);
+    if (const double rn = reach(accept); d2 > rn * rn) {
+      const double rf = reach(depth);
+      if (last < 0 || d2 > rf * rf || !shares_node_with_last(q)) return;
+      accept = depth;
+    } else if (last >= 0 && shares_node_with_last(q)) {
+      accept = depth;
+    }
     if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) return;
     if (single_) {
       const Index* o = &seg_owner_[8 * std::size_t(s)];
@@ -484,7 +497,19 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     // (a node beside a side face it cannot push through), without the projection.
     double n0[3];
     cross3(sg + 4, sg + 8, n0);
-    if (nn_len > 0 && dot3(nn, n0) * sg[11] > (-0.3 + sg[7]) * nn_len) return;
+    float normal_bound[2];  // deviation bound, 1 / |n0|
+    std::memcpy(normal_bound, sg + 11, sizeof normal_bound);
+    if (nn_len > 0 && dot3(nn, n0) * double(normal_bound[1]) > (-0.3 + double(normal_bound[0])) * nn_len) return;
+    // In-plane pre-check (refresh_segment): a node the projection would accept has
+    // |(p - c) . a1| <= bound_xi and |(p - c) . a2| <= bound_eta; two dot products instead of the
+    // Newton projection of a neighbour the node lies beside (about half the projections).
+    if (plain) {
+      float bound[2];
+      std::memcpy(bound, sg + 15, sizeof bound);
+      if (std::abs(dx * sg[4] + dy * sg[5] + dz * sg[6]) > double(bound[0]) ||
+          std::abs(dx * sg[8] + dy * sg[9] + dz * sg[10]) > double(bound[1]))
+        return;
+    }
     const Projection pr = project_to_bilinear(p, sg, def_.spec.MAXPAR);
     if (!pr.inside) return;
     // Orientation: the node's own surface must face the segment (normals at more than ~107 deg),
@@ -532,18 +557,32 @@ void PenaltyContact::refresh_segment(std::size_t s, const double* x) {
     r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
   }
   g[3] = std::sqrt(r2);
+  // In-plane bounds for the search's pre-check (find_segment). A node the projection accepts is
+  // p = x(xi, eta) + gap n with |xi|, |eta| <= m = MAXPAR, |gap| <= release depth D, and n normal
+  // to t_xi = a1 + eta a3 (so n . a1 = -eta n . a3). Hence
+  //   |(p - c) . a1| = |xi a1.a1 + eta a1.a2 + xi eta a1.a3 + gap n.a1|
+  //                  <= m (|a1|^2 + |a1.a2| + m |a1.a3|) + D m |a3|,
+  // and likewise for a2. Stored as two floats in slot 15, rounded up.
+  {
+    const double m = def_.spec.MAXPAR, a12 = std::abs(dot3(g + 4, g + 8)), tw = g[7] * m * std::sqrt(dot3(g + 12, g + 12));
+    const double b_xi = m * (dot3(g + 4, g + 4) + a12 + m * std::abs(dot3(g + 4, g + 12))) + tw;
+    const double b_eta = m * (dot3(g + 8, g + 8) + a12 + m * std::abs(dot3(g + 8, g + 12))) + tw;
+    const float bound[2] = {float(b_xi * (1 + 1e-6)), float(b_eta * (1 + 1e-6))};
+    std::memcpy(g + 15, bound, sizeof bound);
+  }
   double n0[3], u[3], w[3];
   cross3(g + 4, g + 8, n0);
   cross3(g + 4, g + 12, u);
   cross3(g + 12, g + 8, w);
   const double len = std::sqrt(dot3(n0, n0));
-  if (!(len > 0)) {
-    g[7] = 2;  // degenerate: no orientation pre-check
-    g[11] = 0;
-    return;
+  // Stored as floats: the bound rounded up and widened by 1e-6, which also covers the relative
+  // error of 1 / |n0| in float (the pre-check then still skips only what the exact check skips).
+  float normal_bound[2] = {2.0f, 0.0f};  // degenerate: no orientation pre-check
+  if (len > 0) {
+    normal_bound[0] = float(std::min(2.0, 2 * (std::sqrt(dot3(u, u)) + std::sqrt(dot3(w, w))) / len) * (1 + 1e-6) + 1e-6);
+    normal_bound[1] = float(1 / len);
   }
-  g[7] = std::min(2.0, 2 * (std::sqrt(dot3(u, u)) + std::sqrt(dot3(w, w))) / len);
-  g[11] = 1 / len;
+  std::memcpy(g + 11, normal_bound, sizeof normal_bound);
 }
 
 void PenaltyContact::refresh(const double* x, bool all) {

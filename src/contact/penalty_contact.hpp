@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "contact/bucket_grid.hpp"
+#include "core/aligned_allocator.hpp"
 #include "contact/geometry.hpp"
 #include "contact/surface.hpp"
 #include "model/model.hpp"
@@ -124,12 +125,14 @@ class PenaltyContact {
   std::vector<double> seg_mass_;   // SOFT 2 segment mass (half the element's)
   std::vector<double> seg_node_mass_;  // mean nodal mass of its nodes
   std::vector<double> seg_depth_;  // release depth, m
-  // Hot per-segment record, refreshed every pass, one 128-byte record per segment (a candidate's
-  // tests read it contiguously instead of gathering four nodes): [0..2] centre c, [3] bounding
-  // radius, [4..6] a1, [7] bound of the unit normal's deviation from the centre normal,
-  // [8..10] a2, [11] 1 / |a1 x a2|, [12..14] a3 (geometry.hpp coefficient form), [15] unused.
+  // Hot per-segment record, refreshed every pass, one 128-byte record per segment aligned to 128
+  // bytes (a candidate's tests read it contiguously instead of gathering four nodes; the sphere
+  // test reads only its first cache line): [0..2] centre c, [3] bounding radius, [4..6] a1,
+  // [7] release depth, [8..10] a2, [11] two floats: bound of the unit normal's deviation from the
+  // centre normal and 1 / |a1 x a2|, [12..14] a3 (geometry.hpp coefficient form), [15] two floats:
+  // in-plane bounds of (p - c) . a1 and (p - c) . a2 for an accepted node (refresh_segment).
   static constexpr std::size_t kGeo = 16;
-  std::vector<double> seg_geo_;    // (S, kGeo)
+  AlignedVector<double, 128> seg_geo_;  // (S, kGeo)
   std::vector<Index> seg_local_;   // (S, 4) union index of each segment node
   // Slave nodes.
   std::vector<Index> sn_node_;
