@@ -87,9 +87,8 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   add_side(def_.a, builder_a_, 0);
   if (!single_) add_side(def_.b, builder_b_, 1);
   const std::size_t S = seg_side_.size();
-  seg_geo_.assign(kGeo * S, 0.0);
+  seg_geo_.assign(kGeo * S, 0.0);  // stamps 0: stale (cycle_ starts at 1)
   for (std::size_t s = 0; s < S; ++s) seg_geo_[kGeo * s + 7] = seg_depth_[s];  // constant; the rest per pass
-  seg_flag_.assign(S, 0);
   for (auto& ids : side_segs_) ids.clear();
   for (std::size_t s = 0; s < S; ++s) side_segs_[single_ ? 0 : seg_side_[s]].push_back(Index(s));
 
@@ -240,7 +239,8 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   // bucket holds few segments (measured: 10-15 % faster than an edge of extent + 2 margins).
   search_cell_ = cell_;
   estimate_stiffness_range();
-  sort(x.data());
+  build_neighbours();
+  sort(x.data(), 0.0);
 }
 
 std::array<Index, 5> PenaltyContact::segment_key(long s) const {
@@ -359,7 +359,7 @@ void PenaltyContact::estimate_stiffness_range() {
   if (omega2 > 0) dt_stable_ = 2.0 / std::sqrt(omega2);
 }
 
-void PenaltyContact::sort(const double* x) {
+void PenaltyContact::sort(const double* x, double step_depth) {
   // One grid per side (two-way contact): a slave node only walks the other side's segments.
   for (int side = 0; side < (single_ ? 1 : 2); ++side) {
     const auto& ids = side_segs_[side];
@@ -385,23 +385,57 @@ void PenaltyContact::sort(const double* x) {
     for (int d = 0; d < 3; ++d) x_sort_[3 * u + d] = x[3 * std::size_t(union_nodes_[u]) + d];
   cycles_since_sort_ = 0;
   ++sorts_;
-  refresh(x, true);
-  build_candidates(x);
+  // The lists are built for the motion expected before the next sort, not for the whole bucket
+  // allowance: a node moving at the present largest speed covers BSORT dt v_max = BSORT
+  // step_depth / 4 until the next sort, an eighth of this list allowance (a re-sort comes first if
+  // it moves a quarter: apply), at least a fifth of the bucket allowance (fewer sorts by motion).
+  // They hold the segments a node can newly catch within the new-contact depth (find_segment),
+  // whose bound until the next sort is twice the present one (a re-sort comes first if the
+  // motion per step grows beyond it), at least an eighth of the list allowance.
+  list_allowance_ = std::min(allowance_, std::max(0.2 * allowance_, 2.0 * double(def_.spec.BSORT) * step_depth));
+  new_depth_cap_ = std::max(2 * step_depth, 0.125 * list_allowance_);
+  refresh_all(x);
+  build_candidates(x, false);
 }
 
-void PenaltyContact::build_candidates(const double* x) {
+void PenaltyContact::build_neighbours() {
+  // Segments of the same side sharing a node with s (CSR, ascending, s itself left out).
+  const std::size_t S = seg_side_.size();
+  std::vector<std::vector<Index>> of_node(model_.num_nodes());
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k) of_node[std::size_t(seg_nodes_[4 * s + std::size_t(k)])].push_back(Index(s));
+  nbr_start_.assign(S + 1, 0);
+  nbr_.clear();
+  std::vector<Index> near;
+  for (std::size_t s = 0; s < S; ++s) {
+    near.clear();
+    for (int k = 0; k < 4; ++k)
+      for (Index t : of_node[std::size_t(seg_nodes_[4 * s + std::size_t(k)])])
+        if (t != Index(s) && seg_side_[std::size_t(t)] == seg_side_[s]) near.push_back(t);
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    nbr_.insert(nbr_.end(), near.begin(), near.end());
+    nbr_start_[s + 1] = Index(nbr_.size());
+  }
+}
+
+void PenaltyContact::build_candidates(const double* x, bool full_depth) {
   // Until the next sort every contact node moves less than a / 4 from where it is now (the re-sort
-  // test), a = the allowance: a node-to-centre distance changes by at most a / 2 and a bounding
+  // test), a = the list allowance (sort): a node-to-centre distance changes by at most a / 2 and a bounding
   // radius grows by at most a / 2. The search's sphere test (find_segment) accepts at most
-  // |p - c| <= r_factor r + depth, so a segment with
-  //   |p - c| > r_factor (r + a / 2) + depth + a / 2   now
-  // cannot pass it before the next sort and is left out of the node's list. What remains is the
-  // node's bucket filtered to its neighbourhood, in bucket order (same ties as a full search).
-  const std::size_t N = sn_node_.size(), S = seg_side_.size();
-  const double r_factor = 1 + 2 * std::max(def_.spec.MAXPAR - 1, 0.0), half_a = 0.5 * allowance_;
+  // |p - c| <= r_factor r + D, D the depth accepted for a new contact (at most
+  // min(depth, cap + 2 % depth) until the next sort; the full depth when `full_depth`), so a
+  // segment with
+  //   |p - c| > r_factor (r + a / 2) + D + a / 2   now
+  // cannot pass it before the next sort and is left out of the node's list. The full release
+  // depth of a node already in contact is searched on its segment's neighbours (find_segment), not
+  // here: a list sized for it would hold every segment within ~0.4 element of the node, and make
+  // nodes a plate's thickness away from the other surface search and refresh every cycle.
+  // What remains is the node's bucket filtered to its neighbourhood, in bucket order.
+  const std::size_t N = sn_node_.size();
+  const double r_factor = 1 + 2 * std::max(def_.spec.MAXPAR - 1, 0.0), half_a = 0.5 * list_allowance_;
   cand_start_.resize(N + 1);
   cand_.clear();
-  std::fill(seg_flag_.begin(), seg_flag_.end(), 0);
   for (std::size_t i = 0; i < N; ++i) {
     cand_start_[i] = Index(cand_.size());
     const double* p = &x[3 * std::size_t(sn_node_[i])];
@@ -410,19 +444,14 @@ void PenaltyContact::build_candidates(const double* x) {
     for (Index k : grid_[gs].candidates(p)) {
       const std::size_t s = std::size_t(ids[std::size_t(k)]);
       const double* g = &seg_geo_[kGeo * s];
+      const double depth = full_depth ? g[7] : std::min(g[7], new_depth_cap_ + 0.02 * g[7]);
       const double dx = p[0] - g[0], dy = p[1] - g[1], dz = p[2] - g[2];
-      const double reach = r_factor * (g[3] + half_a) + g[7] + half_a;
+      const double reach = r_factor * (double(segment_radius(g)) + half_a) + depth + half_a;
       if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
       cand_.push_back(Index(s));
-      seg_flag_[s] |= 1;
     }
-    if (Index(cand_.size()) > cand_start_[i])  // its normal is needed: its own segments too
-      for (Index k = own_start_[i]; k < own_start_[i + 1]; ++k) seg_flag_[std::size_t(own_segs_[std::size_t(k)])] |= 2;
   }
   cand_start_[N] = Index(cand_.size());
-  refresh_segs_.clear();
-  for (std::size_t s = 0; s < S; ++s)
-    if (seg_flag_[s]) refresh_segs_.push_back(Index(s));
 }
 
 double PenaltyContact::stiffness(std::size_t i, std::size_t s) const {
@@ -439,14 +468,15 @@ double PenaltyContact::stiffness(std::size_t i, std::size_t s) const {
   return std::max(k0, spec.SOFSCL * 0.5 * m / (dt_c_ * dt_c_));
 }
 
-long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& best, double new_contact_depth) const {
+long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& best, double new_contact_depth) {
   const Index c_begin = cand_start_[i], c_end = cand_start_[i + 1];
-  if (c_begin == c_end) return -1;  // nothing within reach until the next sort
   const long last = sn_segment_[i];
+  if (c_begin == c_end && last < 0) return -1;  // nothing within reach until the next sort
   const Index node = sn_node_[i];
   const double* p = &x[3 * std::size_t(node)];
+  // The node's normal, from its own segments, once a candidate passes the sphere test.
   const double* nn = &sn_normal_[3 * i];
-  const double nn_len = std::sqrt(dot3(nn, nn));
+  double nn_len = -1;
   // The in-plane pre-check assumes |gap| <= release depth, i.e. no initial-penetration offset.
   const bool plain = sn_offset_[i] == 0;
   // Distance from the closest point to the node beyond |g|: the tangential overshoot of a
@@ -466,15 +496,16 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     for (int a = 0; a < 4; ++a) near = near || q[a] == ln[0] || q[a] == ln[1] || q[a] == ln[2] || q[a] == ln[3];
     return near;
   };
-  auto consider = [&](Index s) __attribute__((always_inline)) {  // inlined: ~6 candidates per node
-    const double* sg = &seg_geo_[kGeo * std::size_t(s)];
+  auto consider = [&](Index s) __attribute__((always_inline)) {  // inlined: a few candidates per node
+    double* sg = &seg_geo_[kGeo * std::size_t(s)];
+    if (segment_stamp(sg) != cycle_) refresh_segment(std::size_t(s), x);  // first look this cycle
     // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, |g| below
     // the accepted depth, and it can only beat the best so far if it is less penetrated,
     // |g| < |g_best|. Full release depth on the segment the node was in contact with and on its
     // neighbours; the new-contact depth elsewhere (tested first: most candidates fail it).
     const double depth = sg[7];
     const double dx = p[0] - sg[0], dy = p[1] - sg[1], dz = p[2] - sg[2];
-    const double d2 = dx * dx + dy * dy + dz * dz, r = r_factor * sg[3];
+    const double d2 = dx * dx + dy * dy + dz * dz, r = r_factor * double(segment_radius(sg));
     auto reach = [&](double accept) { return r + (best_s >= 0 ? std::min(accept, -best_g) : accept); };
     const Index* q = &seg_nodes_[4 * std::size_t(s)];
     double accept = std::min(depth, new_contact_depth + 0.02 * depth);
@@ -491,6 +522,10 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
       bool own = false;
       for (int k = 0; k < 8; ++k) own = own || o[k] == node;
       if (own) return;
+    }
+    if (nn_len < 0) {
+      node_normal(i, x);
+      nn_len = std::sqrt(dot3(nn, nn));
     }
     // Orientation pre-check with the segment's centre normal, made conservative by the bound of
     // the normal's deviation over the segment: it skips only what the exact check below would skip
@@ -525,13 +560,14 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
       best_g = g;
     }
   };
-  // The segment of the last pass first (a segment not in the list is out of reach).
-  if (last >= 0)
-    for (Index k = c_begin; k < c_end; ++k)
-      if (cand_[std::size_t(k)] == Index(last)) {
-        consider(Index(last));
-        break;
-      }
+  // The segment of the last pass first. Its neighbours take the full release depth; the node's
+  // list covers them only within the new-contact depth: search them here unless the node was
+  // caught at most that deep on its segment (then anything less penetrated is in the list).
+  if (last >= 0) {
+    consider(Index(last));
+    if (best_s < 0 || -best_g > new_depth_cap_)
+      for (Index k = nbr_start_[std::size_t(last)]; k < nbr_start_[std::size_t(last) + 1]; ++k) consider(nbr_[std::size_t(k)]);
+  }
   for (Index k = c_begin; k < c_end; ++k) {
     const Index s = cand_[std::size_t(k)];
     if (s != last) consider(s);
@@ -556,7 +592,10 @@ void PenaltyContact::refresh_segment(std::size_t s, const double* x) {
     const double dx = pk[0] - g[0], dy = pk[1] - g[1], dz = pk[2] - g[2];
     r2 = std::max(r2, dx * dx + dy * dy + dz * dz);
   }
-  g[3] = std::sqrt(r2);
+  // Radius as a float rounded up (the sphere tests stay conservative) beside this cycle's stamp.
+  const float radius = std::nextafter(float(std::sqrt(r2)), std::numeric_limits<float>::infinity());
+  std::memcpy(g + 3, &radius, sizeof radius);
+  std::memcpy(reinterpret_cast<char*>(g + 3) + sizeof radius, &cycle_, sizeof cycle_);
   // In-plane bounds for the search's pre-check (find_segment). A node the projection accepts is
   // p = x(xi, eta) + gap n with |xi|, |eta| <= m = MAXPAR, |gap| <= release depth D, and n normal
   // to t_xi = a1 + eta a3 (so n . a1 = -eta n . a3). Hence
@@ -585,39 +624,32 @@ void PenaltyContact::refresh_segment(std::size_t s, const double* x) {
   std::memcpy(g + 11, normal_bound, sizeof normal_bound);
 }
 
-void PenaltyContact::refresh(const double* x, bool all) {
-  // Node normal: sum over the node's own segments of x_13 x x_24 = 8 a1 x a2 (twice the area times
-  // the mean normal), in ascending segment order.
-  auto add_normal = [&](std::size_t s) {
-    const double* g = &seg_geo_[kGeo * s];
+void PenaltyContact::refresh_all(const double* x) {
+  const std::size_t S = seg_side_.size(), N = sn_node_.size();
+  for (std::size_t s = 0; s < S; ++s) refresh_segment(s, x);
+  for (std::size_t i = 0; i < N; ++i) node_normal(i, x);
+}
+
+void PenaltyContact::node_normal(std::size_t i, const double* x) {
+  // Sum over the node's own segments of x_13 x x_24 = 8 a1 x a2 (twice the area times the mean
+  // normal), in ascending segment order.
+  double* nn = &sn_normal_[3 * i];
+  nn[0] = nn[1] = nn[2] = 0;
+  for (Index k = own_start_[i]; k < own_start_[i + 1]; ++k) {
+    const std::size_t s = std::size_t(own_segs_[std::size_t(k)]);
+    double* g = &seg_geo_[kGeo * s];
+    if (segment_stamp(g) != cycle_) refresh_segment(s, x);
     double n[3];
     cross3(g + 4, g + 8, n);
-    for (int k = 0; k < 4; ++k)
-      if (const Index i = seg_slave_[4 * s + k]; i >= 0)
-        for (int d = 0; d < 3; ++d) sn_normal_[3 * std::size_t(i) + d] += 8 * n[d];
-  };
-  if (all) {
-    const std::size_t S = seg_side_.size();
-    for (std::size_t s = 0; s < S; ++s) refresh_segment(s, x);
-    std::fill(sn_normal_.begin(), sn_normal_.end(), 0.0);
-    for (std::size_t s = 0; s < S; ++s) add_normal(s);
-    return;
+    for (int d = 0; d < 3; ++d) nn[d] += 8 * n[d];
   }
-  for (Index s : refresh_segs_) {
-    refresh_segment(std::size_t(s), x);
-    if (seg_flag_[std::size_t(s)] & 2)
-      for (int k = 0; k < 4; ++k)
-        if (const Index i = seg_slave_[4 * std::size_t(s) + k]; i >= 0)
-          for (int d = 0; d < 3; ++d) sn_normal_[3 * std::size_t(i) + d] = 0;
-  }
-  for (Index s : refresh_segs_)
-    if (seg_flag_[std::size_t(s)] & 2) add_normal(std::size_t(s));
 }
 
 InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<double>& x) {
   InitialPenetrations r;
   r.moved = def_.spec.initial_penetration == config::ContactSpec::InitialPenetration::Move;
-  refresh(x.data(), true);
+  refresh_all(x.data());
+  build_candidates(x.data(), true);  // any depth counts here, so lists sized for the full depth
   for (std::size_t i = 0; i < sn_node_.size(); ++i) {
     Projection pr;
     const long s = find_segment(i, x.data(), pr, std::numeric_limits<double>::infinity());
@@ -632,6 +664,7 @@ InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<dou
       sn_offset_[i] += g;
     }
   }
+  build_candidates(x.data(), false);
   return r;
 }
 
@@ -639,10 +672,11 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   const auto& spec = def_.spec;
   const std::size_t N = sn_node_.size(), U = union_nodes_.size();
   // One pass over the contact nodes: the fastest (it bounds the relative motion in one step) and
-  // the re-sort test: at the interval, or when a node has moved a quarter of the allowance since
+  // the re-sort test: at the interval, or when a node has moved a quarter of the list allowance since
   // the last sort (node and segment together then stay within the allowance).
   ++cycles_since_sort_;
-  const double lim2 = 0.25 * allowance_ * 0.25 * allowance_;
+  ++cycle_;  // every segment record and node normal is stale until first looked at (find_segment)
+  const double lim2 = 0.25 * list_allowance_ * 0.25 * list_allowance_;
   double v_max2 = 0, moved2 = 0;
   for (std::size_t u = 0; u < U; ++u) {
     const std::size_t node = std::size_t(union_nodes_[u]);
@@ -652,8 +686,9 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     moved2 = std::max(moved2, dx * dx + dy * dy + dz * dz);
     v_max2 = std::max(v_max2, dot3(vu, vu));
   }
-  if (cycles_since_sort_ >= spec.BSORT || moved2 > lim2) sort(x);  // sorting refreshes all
-  else refresh(x, false);
+  // Largest new-contact depth of this pass (find_segment's new_contact_depth below).
+  const double step_depth = 4 * dt * std::sqrt(v_max2);
+  if (cycles_since_sort_ >= spec.BSORT || moved2 > lim2 || step_depth > new_depth_cap_) sort(x, step_depth);
   std::fill(fc_.begin(), fc_.end(), 0.0);
   forces_ = ContactForces{};
   const bool friction = spec.FS > 0 || spec.FD > 0;

@@ -26,6 +26,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
@@ -93,23 +95,42 @@ class PenaltyContact {
 
  private:
   void build(const std::vector<double>& x, const AliveMask* alive);
-  void sort(const double* x);
+  // Bucket sort, refresh of every record and normal, candidate lists. step_depth: the largest
+  // new-contact depth of the present pass (4 dt v_max), which bounds the lists' depth cap.
+  void sort(const double* x, double step_depth);
+  // Segments of the same side sharing a node with each segment (nbr_).
+  void build_neighbours();
   double stiffness(std::size_t i, std::size_t s) const;
   // Best penetrated segment of slave node i at x, or -1; fills the projection.
   // new_contact_depth: deepest penetration accepted for a node that was not in contact at the last
   // pass (it can only have crossed the surface by its relative motion in one step; a deeper
   // "penetration" is a node beside an edge projecting onto a side face, not a real one).
-  long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth) const;
+  // Records and the node's normal are refreshed here when first looked at in a pass.
+  long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth);
   void estimate_stiffness_range();
   // Identity of segment s across a rebuild: side and sorted nodes; all -1 for s < 0.
   std::array<Index, 5> segment_key(long s) const;
-  // Search data of segment s at x (seg_geo_): bilinear coefficients, bounding sphere, normal bound.
+  // Search data of segment s at x (seg_geo_): bilinear coefficients, bounding sphere, normal bound,
+  // in-plane bounds, stamped with the present pass (cycle_).
   void refresh_segment(std::size_t s, const double* x);
-  // Per-cycle refresh of the segments some node can reach (refresh_segs_) and the node normals of
-  // the nodes that have candidates; all segments and nodes when `all`.
-  void refresh(const double* x, bool all);
+  // Every record and node normal (at a sort and before the initial-penetration check).
+  void refresh_all(const double* x);
+  // Normal of slave node i from its own segments (refreshing them if stale).
+  void node_normal(std::size_t i, const double* x);
+  // Bounding radius (float, rounded up) and refresh stamp, packed in slot 3 of a record.
+  static float segment_radius(const double* g) {
+    float r;
+    std::memcpy(&r, g + 3, sizeof r);
+    return r;
+  }
+  static std::uint32_t segment_stamp(const double* g) {
+    std::uint32_t stamp;
+    std::memcpy(&stamp, reinterpret_cast<const char*>(g + 3) + sizeof(float), sizeof stamp);
+    return stamp;
+  }
   // After a sort: each slave node's candidate list (segments it can reach before the next sort).
-  void build_candidates(const double* x);
+  // full_depth: lists for any depth (initial-penetration check), else for the new-contact depth.
+  void build_candidates(const double* x, bool full_depth);
 
   const model::Model& model_;
   model::Contact def_;
@@ -149,8 +170,12 @@ class PenaltyContact {
   // at each sort from its bucket, in bucket order.
   std::vector<Index> cand_start_, cand_;
   std::vector<Index> own_start_, own_segs_;  // (CSR over slave nodes) segments of the node's own side
-  std::vector<char> seg_flag_;     // (S) 1: some node's candidate, 2: adjoins a node with candidates
-  std::vector<Index> refresh_segs_;  // segments with a flag, ascending
+  std::vector<Index> nbr_start_, nbr_;  // (CSR over segments) neighbours sharing a node, same side
+  double new_depth_cap_ = 0;       // bound of the new-contact depth until the next sort, m
+  double list_allowance_ = 0;      // motion allowed before the next sort (<= allowance_), m
+  // Pass counter: a record (or node normal) is refreshed when first looked at in a pass, so
+  // segments no node comes near cost nothing (starts at 1: zeroed records are stale).
+  std::uint32_t cycle_ = 1;
   // Nodes receiving forces (union of both sides), their forces and positions at the last sort.
   std::vector<Index> union_nodes_;
   std::vector<Index> local_of_;    // (num_nodes) -> index in union_nodes_, -1
