@@ -36,8 +36,8 @@
 // top layers thin), so only the finest mesh failed. With Q2 = 0 the run passed that point.
 // Fix: the bulk viscosity uses L (solver/element_update.cpp, bulk_viscosity; identical for
 // cubes), checked by tests/core/test_bulk_viscosity_step.cpp. ELFORM 2 at a/h = 12 still needs
-// 0.7: at 0.8 and 0.9 it now runs to ~12 us and then gains energy in the contact zone (see the
-// README, contact section); ELFORM 1 / IHQ 3 is what this test uses.
+// 0.7: at 0.8 and 0.9 it now gains energy in the contact zone from ~4 us, stopped at ~12 us (see
+// the README, contact section); ELFORM 1 / IHQ 3 is what this test uses.
 //
 // Measured: indentation d = approach of the sphere since its pole reached the block's top surface
 // (relative to the fixed base), contact force F = 4 x the z contact force on the quarter sphere,
