@@ -90,18 +90,26 @@ inline double stress_power(const double s[6], const double D[6]) {
 }
 
 // Stable element step (LS-DYNA Theory Manual, time step control for solids) with the bulk
-// viscosity term: L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c + Q1 L |tr D| in compression.
-inline double element_time_step(double volume, double max_face_area, double c, double trD, double q1, double q2) {
-  const double L = volume / max_face_area;
+// viscosity term: L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c + Q1 L |tr D| in compression, L = V / A_max.
+// This is the exact central-difference limit (L/c)(sqrt(1 + xi^2) - xi) of the element's highest
+// mode, omega = 2c/L, under the explicit (v^{n+1/2}) viscous damping xi = Q/c that the bulk
+// viscosity below gives that mode, provided the viscosity uses the same length L (see there).
+inline double element_time_step(double L, double c, double trD, double q1, double q2) {
   const double Q = trD < 0 ? q2 * c + q1 * L * (-trD) : 0.0;
   return L / (Q + std::sqrt(Q * Q + c * c));
 }
 
-// Artificial bulk viscosity pressure (compression only), LS-DYNA default form with l = V^(1/3).
-inline double bulk_viscosity(double rho, double volume, double c, double trD, double q1, double q2) {
+// Artificial bulk viscosity pressure (compression only), LS-DYNA default form
+// q = rho l (Q1 l trD^2 - Q2 c trD), but with the step's characteristic length l = L = V / A_max
+// where theory.md 1.4 (after the LS-DYNA TM) has l = V^(1/3); the two agree for a cube. Why: on
+// the element's thickness mode (omega = 2c/L) q is an explicit damper of ratio
+// xi = (l/L)(Q2 + Q1 l |trD| / c), and the step above is stable only for l = L. With l = V^(1/3) a
+// flat element (aspect A, l/L = A^(2/3)) is damped far harder than the step allows: the Hertz
+// block's 10.8 x 10.8 x 0.083 mm corner elements had l/L = 25.6, xi = 1.54, a limit of 0.30 L/c,
+// and blew up at TSSFAC 0.8-0.9 (tests/core/test_bulk_viscosity_step.cpp).
+inline double bulk_viscosity(double rho, double L, double c, double trD, double q1, double q2) {
   if (trD >= 0) return 0.0;
-  const double l = std::cbrt(volume);
-  return rho * l * (q1 * l * trD * trD - q2 * c * trD);
+  return rho * L * (q1 * L * trD * trD - q2 * c * trD);
 }
 
 inline void gather(const double* a, const Index* conn, double out[3][8]) {
@@ -382,7 +390,7 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
     }
     // Stable step from the largest face area (faces as in hex8_max_face_area); before the stress
     // update because the damage material's TFAIL compares it with the initial step.
-    alignas(64) double dte[kLanes];
+    alignas(64) double dte[kLanes], Le[kLanes];  // Le: characteristic length V / A_max (step, bulk viscosity)
     PLYIMPACT_LANES {
       double area2 = face_area2x2(xe, l, 0, 1, 2, 3);
       const double a1 = face_area2x2(xe, l, 4, 5, 6, 7), a2 = face_area2x2(xe, l, 0, 1, 5, 4);
@@ -393,7 +401,8 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       area2 = a3 > area2 ? a3 : area2;
       area2 = a4 > area2 ? a4 : area2;
       area2 = a5 > area2 ? a5 : area2;
-      dte[l] = element_time_step(V[l], 0.5 * std::sqrt(area2), c, trD[l], q1, q2);
+      Le[l] = V[l] / (0.5 * std::sqrt(area2));
+      dte[l] = element_time_step(Le[l], c, trD[l], q1, q2);
     }
     // Stress update.
     alignas(64) double s[6][kLanes], s_old[6][kLanes];
@@ -487,7 +496,7 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       for (int i = 3; i < 6; ++i) p += (s_old[i][l] + s[i][l]) * D[i][l];
       dIE[l] = V[l] * p * dt;
     }
-    // V^(1/3) (bulk-viscosity length, hourglass area scale) by Newton iterations from above:
+    // V^(1/3) (hourglass area scale) by Newton iterations from above:
     // 2 x the mean half-edge length |J_xi|, |J_eta|, |J_zeta| bounds it (volume <= product of the
     // edges, arithmetic >= geometric mean), and Newton on y^3 = V converges monotonically from
     // above; 7 iterations reach round-off for aspect ratios up to ~50. Unlike std::cbrt it vectorises.
@@ -509,12 +518,12 @@ void elform1(const model::Model& model, const model::ElementBlock& blk, BlockSta
       y = (2.0 * y + vol / (y * y)) * (1.0 / 3.0);
       cbrtV[l] = y;
     }
-    // Bulk viscosity (compression only). Its work uses the trapezoid rule, (q_old + q_new)/2, as
-    // the force acts over both half steps around it.
+    // Bulk viscosity (compression only; length Le as the step, see bulk_viscosity). Its work uses
+    // the trapezoid rule, (q_old + q_new)/2, as the force acts over both half steps around it.
     alignas(64) double q_old[kLanes];
     for (int l = 0; l < kLanes; ++l) q_old[l] = st.bulk_q[elem[l]];
     PLYIMPACT_LANES {
-      const double ll = cbrtV[l];
+      const double ll = Le[l];
       q[l] = trD[l] < 0 ? rho[l] * ll * (q1 * ll * trD[l] * trD[l] - q2 * c * trD[l]) : 0.0;
       dQ[l] = -0.5 * (q_old[l] + q[l]) * trD[l] * V[l] * dt;
     }
@@ -766,7 +775,8 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
     }
     trDbar /= V;
     // The element step comes before the material (MAT_054 TFAIL and ERODE/TSMIN need it).
-    const double dte = element_time_step(V, element::hex8_max_face_area(xe), c, trDbar, q1, q2);
+    const double Le = V / element::hex8_max_face_area(xe);  // characteristic length (step, bulk viscosity)
+    const double dte = element_time_step(Le, c, trDbar, q1, q2);
     if (dt == 0 && !st.initial_dt.empty()) st.initial_dt[e] = dte;
     double Qo[9] = {}, Qn[9] = {};
     material::CompositeDamageContext ctx;
@@ -847,7 +857,7 @@ void elform2(const model::Model& model, const model::ElementBlock& blk, BlockSta
       r.eroded_energy += st.internal_energy[e] + st.hourglass_energy[e];
       continue;
     }
-    const double q = bulk_viscosity(rho, V, c, trDbar, q1, q2);
+    const double q = bulk_viscosity(rho, Le, c, trDbar, q1, q2);
     r.bulk_viscous_energy += -0.5 * (st.bulk_q[e] + q) * trDbar * V * dt;  // trapezoid, as in ELFORM 1
     st.bulk_q[e] = q;
     for (int i = 0; i < 3; ++i)
