@@ -535,6 +535,16 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     float normal_bound[2];  // deviation bound, 1 / |n0|
     std::memcpy(normal_bound, sg + 11, sizeof normal_bound);
     if (nn_len > 0 && dot3(nn, n0) * double(normal_bound[1]) > (-0.3 + double(normal_bound[0])) * nn_len) return;
+    // Can it beat the best so far (g > g_best)? An accepted node has a negative gap, p - c =
+    // xi a1 + eta a2 + xi eta a3 + gap n with |xi|, |eta| <= m, and 0 < n . n0/|n0| <= 1 (normal
+    // deviation bound < 1), so gap <= gap (n . n0/|n0|) = (p - c) . n0/|n0| - xi eta a3 . n0/|n0|
+    // <= (p - c) . n0/|n0| + m^2 |a3 . n0|/|n0|. A node on the shared corner of several segments of
+    // a flat surface (matching meshes) then projects onto the first only: the others tie.
+    if (best_s >= 0 && double(normal_bound[0]) < 1) {
+      const double m = def_.spec.MAXPAR, inv = 1 / std::sqrt(dot3(n0, n0));
+      const double upper = (dx * n0[0] + dy * n0[1] + dz * n0[2] + m * m * std::abs(dot3(n0, sg + 12))) * inv;
+      if (upper - sn_offset_[i] <= best_g) return;
+    }
     // In-plane pre-check (refresh_segment): a node the projection would accept has
     // |(p - c) . a1| <= bound_xi and |(p - c) . a2| <= bound_eta; two dot products instead of the
     // Newton projection of a neighbour the node lies beside (about half the projections).
