@@ -30,12 +30,15 @@ PenaltyContact::PenaltyContact(const model::Model& model, const model::Contact& 
 void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive) {
   const auto& spec = def_.spec;
   // Keep per-node history across a rebuild (eroding contact): forces, friction, offsets, whether
-  // the node was in contact (its spring is not a new one). history key: 2 * node + side.
-  std::vector<std::pair<Index, std::array<double, 6>>> history;
+  // the node was in contact (its spring is not a new one) and that spring's gap, stiffness and
+  // normal force (its potential is carried to whatever segment it finds next: apply). history key:
+  // 2 * node + side.
+  std::vector<std::pair<Index, std::array<double, 11>>> history;
   for (std::size_t i = 0; i < sn_node_.size(); ++i)
     history.push_back({2 * sn_node_[i] + sn_side_[i],
                        {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i],
-                        sn_segment_[i] >= 0 ? 1.0 : 0.0}});
+                        sn_engaged_[i] ? 1.0 : 0.0, sn_gap_[i], sn_k_last_[i], sn_fn_[3 * i], sn_fn_[3 * i + 1],
+                        sn_fn_[3 * i + 2]}});
   // The segment each node was in contact with, by its sorted nodes and side (indices change).
   std::vector<std::array<Index, 5>> history_segment;
   for (std::size_t i = 0; i < sn_node_.size(); ++i) history_segment.push_back(segment_key(sn_segment_[i]));
@@ -151,6 +154,9 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   sn_ft_.assign(3 * N, 0.0);
   sn_segment_.assign(N, -1);
   sn_engaged_.assign(N, 0);
+  sn_gap_.assign(N, 0.0);
+  sn_k_last_.assign(N, 0.0);
+  sn_fn_.assign(3 * N, 0.0);
   if (!history.empty()) {  // restore the per-node history (once per rebuild)
     std::vector<Index> slave_of(2 * model_.num_nodes(), -1);
     for (std::size_t i = 0; i < N; ++i) slave_of[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
@@ -160,6 +166,9 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
       for (int d = 0; d < 3; ++d) sn_ft_[3 * std::size_t(i) + d] = h[d];
       sn_offset_[i] = h[3];
       sn_engaged_[i] = h[5] > 0;
+      sn_gap_[i] = h[6];
+      sn_k_last_[i] = h[7];
+      for (int d = 0; d < 3; ++d) sn_fn_[3 * std::size_t(i) + d] = h[8 + std::size_t(d)];
     }
     // The segment of the last pass, where it survived: its neighbours keep the full release depth
     // (find_segment), so a node pressed into the surface is not released by an erosion elsewhere.
@@ -454,7 +463,12 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
   // a neighbour (one sharing a node with it) at the depth it has, so the neighbour keeps the full
   // release depth; with the new-contact depth there, a node pressed deeper than it was released at
   // every segment boundary it slid across (Hertz: the contact area grows under the sphere).
+  // A neighbour is a continuation of the surface only as deep as the node was plus what it can
+  // have moved in one step: a node lifting off a top face beside an eroded hole lies "behind" the
+  // hole's side face (which shares the edge) by its distance from the edge, and a spring of that
+  // depth would appear from nothing and push the bodies apart (energy created).
   Index ln[4] = {-1, -1, -1, -1};
+  const double last_depth = last >= 0 ? std::max(-sn_gap_[i], 0.0) : 0.0;
   if (last >= 0)
     for (int k = 0; k < 4; ++k) ln[k] = seg_nodes_[4 * std::size_t(last) + std::size_t(k)];
   auto consider = [&](Index s) {
@@ -464,9 +478,12 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     if (last >= 0)
       for (int a = 0; a < 4; ++a)
         near_last = near_last || q[a] == ln[0] || q[a] == ln[1] || q[a] == ln[2] || q[a] == ln[3];
-    // Full release depth on the segment the node was in contact with and on its neighbours.
-    const double accept =
-        near_last ? seg_depth_[s] : std::min(seg_depth_[s], new_contact_depth + 0.02 * seg_depth_[s]);
+    // Full release depth on the segment the node was in contact with, its depth at the last pass
+    // plus the new-contact depth on the neighbours.
+    const double catch_depth = new_contact_depth + 0.02 * seg_depth_[s];
+    const double accept = s == last   ? seg_depth_[s]
+                          : near_last ? std::min(seg_depth_[s], last_depth + catch_depth)
+                                      : std::min(seg_depth_[s], catch_depth);
     // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, and it can
     // only beat the best so far if it is less penetrated, |g| < |g_best|.
     const double dx = p[0] - sg[0], dy = p[1] - sg[1], dz = p[2] - sg[2];
@@ -618,7 +635,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   std::fill(fc_.begin(), fc_.end(), 0.0);
   forces_ = ContactForces{};
   const bool friction = spec.FS > 0 || spec.FD > 0;
-  double friction_work = 0, entry_correction = 0;
+  double friction_work = 0, spring_correction = 0;
   const double v_max = std::sqrt(v_max2);
   for (std::size_t i = 0; i < N; ++i) {
     Projection pr;
@@ -626,10 +643,13 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max));
     double* ft = &sn_ft_[3 * i];
     const bool entering = !sn_engaged_[i];
+    const long last = sn_segment_[i];
     sn_segment_[i] = s;
     sn_engaged_[i] = s >= 0;
-    if (s < 0) {
+    if (s < 0) {  // released: a spring's remaining potential stays in the contact energy (lost)
       ft[0] = ft[1] = ft[2] = 0;
+      sn_gap_[i] = sn_k_last_[i] = 0;
+      for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = 0;
       continue;
     }
     const Index node = sn_node_[i];
@@ -669,11 +689,30 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       friction_work -= dot3(ft, vt) * dt;
       forces_.tangential += std::sqrt(dot3(ft, ft));
     }
-    // Energy of a spring that engages in this step: the trapezoid below books 0.5 fn vn dt, the
-    // force times the whole step's normal motion, but the node only crossed the surface part of
-    // the way; the spring's energy is 0.5 k g^2 = -0.5 fn g. The difference grows as k (vn dt)^2
-    // and with a stiff penalty exceeds the impact energy (ContactStep test).
-    if (entering) entry_correction += 0.5 * fn * (g - vn * dt);
+    // Energy of a spring that is new in this step (the node engages, switches segment or the
+    // stiffness changed). The trapezoid below books this node's old and new forces times the whole
+    // step's relative motion, -0.5 (F_old . v_rel + fn vn) dt, which is right only for a spring
+    // whose gap moved continuously from g_old to g. Otherwise:
+    //  - engaging: the node crossed the surface part of the way; the spring holds 0.5 k g^2 (the
+    //    difference grows as k (vn dt)^2 and with a stiff penalty exceeds the impact energy,
+    //    ContactStep test);
+    //  - switching: the new spring starts from g0 = g - vn dt (its gap before this step's motion),
+    //    potential P0 = 0.5 k g0^2, where the old one had P_old. Its energy is booked as
+    //    P - min(P0, P_old): a jump up (a node found deeper behind the new segment than the old
+    //    one had it) is energy the discrete model creates, booked here so that the contact energy
+    //    keeps its springs' potential and the jump shows in the energy ratio instead of as
+    //    negative contact energy; a jump down keeps the lost part in the contact energy like a
+    //    spring released while compressed.
+    if (entering || s != last || k != sn_k_last_[i]) {
+      const double g0 = g - vn * dt;
+      const double p_new = 0.5 * k * g * g, p_start = g0 < 0 ? 0.5 * k * g0 * g0 : 0.0;
+      const double p_old = entering ? 0.0 : 0.5 * sn_k_last_[i] * sn_gap_[i] * sn_gap_[i];
+      const double booked = -0.5 * (dot3(&sn_fn_[3 * i], vrel) + fn * vn) * dt;
+      spring_correction += booked - (p_new - std::min(p_start, p_old));
+    }
+    sn_gap_[i] = g;
+    sn_k_last_[i] = k;
+    for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = fn * n[d];
     forces_.normal += fn;
     ++forces_.active;
     const Index ui = sn_local_[i];
@@ -707,7 +746,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       if (union_side_a_[u]) forces_.resultant[d] += fu;
     }
   }
-  energy_ -= work + entry_correction;
+  energy_ -= work + spring_correction;
   friction_energy_ += friction_work;
   dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
   fc_prev_.swap(fc_);
