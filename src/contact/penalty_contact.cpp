@@ -714,6 +714,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     sn_k_last_[i] = k;
     for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = fn * n[d];
     forces_.normal += fn;
+    forces_.potential += 0.5 * k * g * g;
     ++forces_.active;
     const Index ui = sn_local_[i];
     double* fs = &fc_[3 * std::size_t(ui)];

@@ -52,6 +52,7 @@ struct ContactForces {
   double normal = 0;         // N, sum of the normal force magnitudes of all contact points
   double tangential = 0;     // N, sum of the friction force magnitudes
   std::size_t active = 0;    // number of penetrating nodes
+  double potential = 0;      // J, sum of 0.5 k g^2 of the active springs (the contact energy is never below it)
 };
 
 class PenaltyContact {
