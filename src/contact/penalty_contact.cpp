@@ -31,12 +31,15 @@ PenaltyContact::PenaltyContact(const model::Model& model, const model::Contact& 
 void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive) {
   const auto& spec = def_.spec;
   // Keep per-node history across a rebuild (eroding contact): forces, friction, offsets, whether
-  // the node was in contact (its spring is not a new one). history key: 2 * node + side.
-  std::vector<std::pair<Index, std::array<double, 6>>> history;
+  // the node was in contact (its spring is not a new one) and that spring's gap, stiffness and
+  // normal force (its potential is carried to whatever segment it finds next: apply). history key:
+  // 2 * node + side.
+  std::vector<std::pair<Index, std::array<double, 11>>> history;
   for (std::size_t i = 0; i < sn_node_.size(); ++i)
     history.push_back({2 * sn_node_[i] + sn_side_[i],
                        {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i],
-                        sn_segment_[i] >= 0 ? 1.0 : 0.0}});
+                        sn_engaged_[i] ? 1.0 : 0.0, sn_gap_[i], sn_k_last_[i], sn_fn_[3 * i], sn_fn_[3 * i + 1],
+                        sn_fn_[3 * i + 2]}});
   // The segment each node was in contact with, by its sorted nodes and side (indices change).
   std::vector<std::array<Index, 5>> history_segment;
   for (std::size_t i = 0; i < sn_node_.size(); ++i) history_segment.push_back(segment_key(sn_segment_[i]));
@@ -152,6 +155,9 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   sn_ft_.assign(3 * N, 0.0);
   sn_segment_.assign(N, -1);
   sn_engaged_.assign(N, 0);
+  sn_gap_.assign(N, 0.0);
+  sn_k_last_.assign(N, 0.0);
+  sn_fn_.assign(3 * N, 0.0);
   if (!history.empty()) {  // restore the per-node history (once per rebuild)
     std::vector<Index> slave_of(2 * model_.num_nodes(), -1);
     for (std::size_t i = 0; i < N; ++i) slave_of[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
@@ -161,6 +167,9 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
       for (int d = 0; d < 3; ++d) sn_ft_[3 * std::size_t(i) + d] = h[d];
       sn_offset_[i] = h[3];
       sn_engaged_[i] = h[5] > 0;
+      sn_gap_[i] = h[6];
+      sn_k_last_[i] = h[7];
+      for (int d = 0; d < 3; ++d) sn_fn_[3 * std::size_t(i) + d] = h[8 + std::size_t(d)];
     }
     // The segment of the last pass, where it survived: its neighbours keep the full release depth
     // (find_segment), so a node pressed into the surface is not released by an erosion elsewhere.
@@ -485,10 +494,14 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
   long best_s = -1;
   double best_g = 0;
   // Nodes of the segment of the last pass (-1: none). A node in contact slides from its segment to
-  // a neighbour (one sharing a node with it) at the depth it has, so the neighbour keeps the full
-  // release depth; with the new-contact depth there, a node pressed deeper than it was released at
-  // every segment boundary it slid across (Hertz: the contact area grows under the sphere).
+  // a neighbour (one sharing a node with it) at the depth it has: the neighbour accepts the node's
+  // depth at the last pass plus the one-step catch depth. With the catch depth alone a node pressed
+  // deeper was released at every segment boundary it slid across (Hertz: the contact area grows
+  // under the sphere); with the full release depth a node lifting off a top face beside an eroded
+  // hole was caught by the hole's side face (which shares the edge) at its distance from the edge,
+  // a spring from nothing that pushed the bodies apart (energy created).
   Index ln[4] = {-1, -1, -1, -1};
+  const double last_depth = last >= 0 ? std::max(-sn_gap_[i], 0.0) : 0.0;
   if (last >= 0)
     for (int k = 0; k < 4; ++k) ln[k] = seg_nodes_[4 * std::size_t(last) + std::size_t(k)];
   auto shares_node_with_last = [&](const Index* q) {
@@ -501,20 +514,27 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     if (segment_stamp(sg) != cycle_) refresh_segment(std::size_t(s), x);  // first look this cycle
     // Bounding sphere: an accepted node lies within r + |g| (+ overshoot) of the centre, |g| below
     // the accepted depth, and it can only beat the best so far if it is less penetrated,
-    // |g| < |g_best|. Full release depth on the segment the node was in contact with and on its
-    // neighbours; the new-contact depth elsewhere (tested first: most candidates fail it).
+    // |g| < |g_best|. Full release depth on the segment the node was in contact with, its depth at
+    // the last pass plus the new-contact depth on the neighbours, the new-contact depth elsewhere
+    // (tested first: most candidates fail it).
     const double depth = sg[7];
+    const double catch_depth = new_contact_depth + 0.02 * depth;
     const double dx = p[0] - sg[0], dy = p[1] - sg[1], dz = p[2] - sg[2];
     const double d2 = dx * dx + dy * dy + dz * dz, r = r_factor * double(segment_radius(sg));
     auto reach = [&](double accept) { return r + (best_s >= 0 ? std::min(accept, -best_g) : accept); };
     const Index* q = &seg_nodes_[4 * std::size_t(s)];
-    double accept = std::min(depth, new_contact_depth + 0.02 * depth);
-    if (const double rn = reach(accept); d2 > rn * rn) {
-      const double rf = reach(depth);
-      if (last < 0 || d2 > rf * rf || !shares_node_with_last(q)) return;
-      accept = depth;
-    } else if (last >= 0 && shares_node_with_last(q)) {
-      accept = depth;
+    double accept = std::min(depth, catch_depth);
+    if (last >= 0) {
+      const double near_depth = s == last ? depth : std::min(depth, last_depth + catch_depth);
+      if (const double rn = reach(accept); d2 > rn * rn) {
+        const double rf = reach(near_depth);
+        if (d2 > rf * rf || !shares_node_with_last(q)) return;
+        accept = near_depth;
+      } else if (shares_node_with_last(q)) {
+        accept = near_depth;
+      }
+    } else if (const double rn = reach(accept); d2 > rn * rn) {
+      return;
     }
     if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) return;
     if (single_) {
@@ -702,7 +722,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   std::fill(fc_.begin(), fc_.end(), 0.0);
   forces_ = ContactForces{};
   const bool friction = spec.FS > 0 || spec.FD > 0;
-  double friction_work = 0, entry_correction = 0;
+  double friction_work = 0, spring_correction = 0;
   const double v_max = std::sqrt(v_max2);
   for (std::size_t i = 0; i < N; ++i) {
     Projection pr;
@@ -710,10 +730,13 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max));
     double* ft = &sn_ft_[3 * i];
     const bool entering = !sn_engaged_[i];
+    const long last = sn_segment_[i];
     sn_segment_[i] = s;
     sn_engaged_[i] = s >= 0;
-    if (s < 0) {
+    if (s < 0) {  // released: a spring's remaining potential stays in the contact energy (lost)
       ft[0] = ft[1] = ft[2] = 0;
+      sn_gap_[i] = sn_k_last_[i] = 0;
+      for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = 0;
       continue;
     }
     const Index node = sn_node_[i];
@@ -753,12 +776,32 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       friction_work -= dot3(ft, vt) * dt;
       forces_.tangential += std::sqrt(dot3(ft, ft));
     }
-    // Energy of a spring that engages in this step: the trapezoid below books 0.5 fn vn dt, the
-    // force times the whole step's normal motion, but the node only crossed the surface part of
-    // the way; the spring's energy is 0.5 k g^2 = -0.5 fn g. The difference grows as k (vn dt)^2
-    // and with a stiff penalty exceeds the impact energy (ContactStep test).
-    if (entering) entry_correction += 0.5 * fn * (g - vn * dt);
+    // Energy of a spring that is new in this step (the node engages, switches segment or the
+    // stiffness changed). The trapezoid below books this node's old and new forces times the whole
+    // step's relative motion, -0.5 (F_old . v_rel + fn vn) dt, which is right only for a spring
+    // whose gap moved continuously from g_old to g. Otherwise:
+    //  - engaging: the node crossed the surface part of the way; the spring holds 0.5 k g^2 (the
+    //    difference grows as k (vn dt)^2 and with a stiff penalty exceeds the impact energy,
+    //    ContactStep test);
+    //  - switching: the new spring starts from g0 = g - vn dt (its gap before this step's motion),
+    //    potential P0 = 0.5 k g0^2, where the old one had P_old. Its energy is booked as
+    //    P - min(P0, P_old): a jump up (a node found deeper behind the new segment than the old
+    //    one had it) is energy the discrete model creates, booked here so that the contact energy
+    //    keeps its springs' potential and the jump shows in the energy ratio instead of as
+    //    negative contact energy; a jump down keeps the lost part in the contact energy like a
+    //    spring released while compressed.
+    if (entering || s != last || k != sn_k_last_[i]) {
+      const double g0 = g - vn * dt;
+      const double p_new = 0.5 * k * g * g, p_start = g0 < 0 ? 0.5 * k * g0 * g0 : 0.0;
+      const double p_old = entering ? 0.0 : 0.5 * sn_k_last_[i] * sn_gap_[i] * sn_gap_[i];
+      const double booked = -0.5 * (dot3(&sn_fn_[3 * i], vrel) + fn * vn) * dt;
+      spring_correction += booked - (p_new - std::min(p_start, p_old));
+    }
+    sn_gap_[i] = g;
+    sn_k_last_[i] = k;
+    for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = fn * n[d];
     forces_.normal += fn;
+    forces_.potential += 0.5 * k * g * g;
     ++forces_.active;
     const Index ui = sn_local_[i];
     double* fs = &fc_[3 * std::size_t(ui)];
@@ -791,7 +834,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       if (union_side_a_[u]) forces_.resultant[d] += fu;
     }
   }
-  energy_ -= work + entry_correction;
+  energy_ -= work + spring_correction;
   friction_energy_ += friction_work;
   dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
   fc_prev_.swap(fc_);

@@ -16,8 +16,11 @@
 //               linear momentum is conserved to round-off. Friction: elastic-slip return map with
 //               mu = FD + (FS - FD) exp(-DC |v_rel|); VDC: normal viscous damping, % of critical.
 //   energy    : contact energy = - work of the contact forces (trapezoid in time; a spring that
-//               engages in the step is booked as 0.5 k g^2); the frictional part (work of the
-//               tangential forces against the slip) is reported separately.
+//               engages, switches segment or changes stiffness in the step is booked at its
+//               potential 0.5 k g^2: a jump up is energy the discrete model created and shows in
+//               the energy ratio, a jump down or a release stays in the contact energy), so it is
+//               never below the potential of the active springs; the frictional part (work of
+//               the tangential forces against the slip) is reported separately.
 //   stability : a priori step of the stiffest single spring (check, warning) and, every pass, the
 //               Gershgorin bound of the active springs (spring_stable_step), which the solver
 //               combines with the element step.
@@ -52,6 +55,7 @@ struct ContactForces {
   double normal = 0;         // N, sum of the normal force magnitudes of all contact points
   double tangential = 0;     // N, sum of the friction force magnitudes
   std::size_t active = 0;    // number of penetrating nodes
+  double potential = 0;      // J, sum of 0.5 k g^2 of the active springs (the contact energy is never below it)
 };
 
 class PenaltyContact {
@@ -165,6 +169,9 @@ class PenaltyContact {
   std::vector<Index> seg_slave_;   // (S, 4) slave index of each segment node on the segment's side
   std::vector<long> sn_segment_;   // segment the node was in contact with at the last pass, -1
   std::vector<char> sn_engaged_;   // in contact at the last pass (kept across a rebuild, unlike sn_segment_)
+  // The spring of the last pass (kept across a rebuild): gap g (0: none), stiffness k and normal
+  // force (N, 3); its potential 0.5 k g^2 is what a segment switch starts from (apply).
+  std::vector<double> sn_gap_, sn_k_last_, sn_fn_;
   // Incremental search (LS-DYNA-style: between bucket sorts a node only looks at the segments it
   // can reach): candidates of slave node i are cand_[cand_start_[i] .. cand_start_[i + 1]), built
   // at each sort from its bucket, in bucket order.

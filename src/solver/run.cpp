@@ -15,6 +15,7 @@
 #include "output/json.hpp"
 #include "output/pvd_series.hpp"
 #include "output/vtu_writer.hpp"
+#include "solver/contact_energy_watch.hpp"
 #include "solver/frame_builder.hpp"
 #include "solver/solver.hpp"
 
@@ -198,6 +199,10 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   };
 
   std::unique_ptr<Solver> solver;
+  std::vector<std::string> contact_names;
+  for (const auto& c : model.contacts) contact_names.push_back(c.spec.name);
+  ContactEnergyWatch contact_watch(contact_names);
+  std::vector<double> contact_energies(model.contacts.size(), 0.0);
   try {
     solver = std::make_unique<Solver>(model);
     for (const auto& w : solver->warnings()) report.warnings.push_back(w);
@@ -213,6 +218,10 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
       solver_seconds += seconds_since(t0);
       ++solver_cycles;
       const double t = s.time;
+      if (!contact_energies.empty()) {
+        for (std::size_t c = 0; c < contact_energies.size(); ++c) contact_energies[c] = solver->contacts()[c].energy();
+        contact_watch.observe(contact_energies, t, s.initial_total_energy + solver->balance().external_work);
+      }
       if (t >= next_history * (1 - 1e-12) && solver->balance().time > 0) {
         add_history_row(*solver, history);
         next_history += history_interval * std::max(1.0, std::floor((t - next_history) / history_interval) + 1);
@@ -264,6 +273,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
                   100 * model.control.hourglass_warn_ratio);
     report.warnings.push_back(w);
   }
+  for (const auto& w : contact_watch.warnings()) report.warnings.push_back(w);
   if (solver && std::abs(report.energy_ratio - 1.0) > 0.05)
     report.warnings.push_back("energy ratio " + std::to_string(report.energy_ratio) + " differs from 1 by more than 5%");
   history.write_csv(report.history);

@@ -1,0 +1,119 @@
+// A node lifting off a surface beside an eroded hole must not be caught by the hole's side face
+// (contact/penalty_contact, find_segment). Mechanism (default scene with IHQ 6, contact energy
+// -0.87 J at 1.4 ms): a tup node pressed on a ply's top face next to an eroded element lifts off
+// (its gap there turns positive); it is then a hair above the top face and a little inside the
+// edge, i.e. "behind" the plane of the hole's side face, which shares the edge with its old segment.
+// Within the projection tolerance (MAXPAR) that side face sees a penetration as deep as the node's
+// distance from the edge, and as a neighbour of the last segment it was accepted down to the full
+// release depth: a spring of that depth appeared in one step with nobody having compressed it, and
+// pushed tup and plate apart (energy created; the contact energy, which books the contact's work,
+// went negative by the same amount).
+//
+// Scene: a steel base (3 x 3 x 2 elements of 1 mm) with its top middle element deleted (a 1 mm
+// hole, eroding contact rebuilt), and a small steel punch dropped at 10 m/s so that a 0.1 mm strip
+// of its bottom rests on the top face beside the hole and the rest overhangs the hole. The punch's
+// edge nodes (node normal between -z and +y, facing the hole's side face) bounce off the top face
+// 0.1 mm inside the edge. Reference: conservation of energy (elastic bodies, ELFORM 2 with no
+// hourglass modes, frictionless contact, no damping), so KE + IE + contact energy stays at the
+// initial KE, and the contact energy (the springs' potential plus what released springs kept)
+// is never below zero.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "support.hpp"
+
+namespace plyimpact {
+namespace {
+
+std::string hole_scene() {
+  return std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+         "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+         "sections:\n  s: {ELFORM: 2}\n"
+         "parts:\n  base: {material: steel, section: s}\n  punch: {material: steel, section: s}\n"
+         "mesh:\n  merge_nodes: false\n  boxes:\n"
+         "    - {part: base, origin: [0, 0, 0], size: [0.003, 0.003, 0.002], elements: [3, 3, 2]}\n"
+         "    - {part: punch, origin: [0.0011, 0.0013, 0.002002], size: [0.0008, 0.0008, 0.0005], elements: [2, 2, 1]}\n"
+         "initial_velocity:\n  - {part: punch, velocity: [0, 0, -10]}\n"
+         "contacts:\n  - {name: hole, type: eroding_surface_to_surface, surfaces: [punch, base], SOFT: 1}\n";
+}
+
+TEST(HoleEdge, NodeLiftingOffBesideAHoleIsNotCaughtByItsSideFace) {
+  const model::Model model = test::model_from_yaml(hole_scene(), "hole.yaml");
+  solver::Solver solver(model);
+  ASSERT_EQ(solver.initial_penetrations()[0].count, 0u);
+  solver.delete_elements({14});  // top middle element (ids: base first, x fastest; top layer 10..18)
+  const double ke0 = solver.balance().kinetic;
+  const double v0 = 10;  // m/s, impact speed: no node moves faster relative to the base (energy)
+  double e_min = 0, ratio_max = 1, ratio_min = 1, release_bound = 0, normal_prev = 0;
+  long contact_cycles = 0;
+  std::size_t active_prev = 0;
+  while (solver.state().time < 20e-6) {  // contact from 0.2 us, the bounce is over in a few us
+    solver.step();
+    e_min = std::min(e_min, solver.balance().contact);
+    ratio_max = std::max(ratio_max, solver.energy_ratio());
+    ratio_min = std::min(ratio_min, solver.energy_ratio());
+    if (solver.contacts()[0].forces().active > 0) ++contact_cycles;
+    const auto& fc = solver.contacts()[0].forces();
+    if (fc.active < active_prev) release_bound += 0.5 * normal_prev * v0 * solver.state().dt_prev_half;
+    active_prev = fc.active;
+    normal_prev = fc.normal;
+  }
+  std::cout << "hole edge: initial KE " << ke0 << " J, contact energy min " << e_min << " J, end "
+            << solver.balance().contact << " J, energy ratio " << ratio_min << " .. " << ratio_max
+            << ", cycles in contact " << contact_cycles << "\n";
+  ASSERT_GT(contact_cycles, 0);  // the punch did hit the top face
+  // The contact energy is bounded below by zero up to the trapezoid's booking of a spring that
+  // lets go: in its last step it books 0.5 fn_old vn dt (fn_old: its force at the pass before),
+  // more than the 0.5 fn_old |g_old| it held when the node leaves within the step, so each
+  // release may over-book by at most 0.5 fn_old vn dt, vn <= v0. Summed over the passes where
+  // springs let go (with the total normal force of the pass before: conservative). Measured:
+  // -1.5e-7 J against a bound of ~3e-7 J; the spurious side-face spring was ~0.1 J.
+  std::cout << "release bound " << release_bound << " J\n";
+  EXPECT_GT(e_min, -release_bound);
+  // Energy conserved within 1 % (as for the head-on blocks, test_penalty_contact.cpp: the
+  // penalty springs are booked to second order in dt); before the fix the spurious side-face
+  // spring (0.1 mm deep at k ~ 2e7 N/m, ~ 0.1 J) created energy many times the 1.3e-4 J impact energy.
+  EXPECT_LT(ratio_max, 1.01);
+  EXPECT_GT(ratio_min, 0.99);
+}
+
+// The same drop with the punch's edge only 5 um inside the hole's edge: within the depth at which
+// a node not in contact is still caught (its one-step motion plus 2 % of the release depth, ~10 um
+// here), so the side face takes the approaching edge nodes as a new contact 5 um deep, a spring
+// nobody compressed. That energy is created by the discrete model and cannot be avoided without
+// a smaller catch allowance; it must be booked (apply: a new spring is booked at its potential) so
+// that the contact energy never falls below the potential of its active springs (sum 0.5 k g^2,
+// computed from the state, independently of the work booking) and the creation shows in the
+// energy ratio (printed; the run's energy-ratio stop is switched off) instead of as negative
+// contact energy.
+TEST(HoleEdge, SpringCaughtWithinTheCatchDepthIsBookedAtItsPotential) {
+  std::string yaml = hole_scene();
+  const std::string from = "origin: [0.0011, 0.0013, 0.002002]", to = "origin: [0.0011, 0.001205, 0.002002]";
+  yaml.replace(yaml.find(from), from.size(), to);
+  const std::string ctl = "control: {termination_time: 1.0}";
+  yaml.replace(yaml.find(ctl), ctl.size(), "control: {termination_time: 1.0, energy_ratio_limit: 0}");
+  const model::Model model = test::model_from_yaml(yaml, "hole5.yaml");
+  solver::Solver solver(model);
+  solver.delete_elements({14});
+  const double ke0 = solver.balance().kinetic;
+  double worst = 0, potential_max = 0, ratio_max = 1;
+  while (solver.state().time < 20e-6) {
+    solver.step();
+    const auto& c = solver.contacts()[0];
+    worst = std::min(worst, c.energy() - c.forces().potential);
+    potential_max = std::max(potential_max, c.forces().potential);
+    ratio_max = std::max(ratio_max, solver.energy_ratio());
+  }
+  std::cout << "hole edge 5 um: initial KE " << ke0 << " J, largest spring potential " << potential_max
+            << " J, contact energy - potential min " << worst << " J, energy ratio max " << ratio_max << "\n";
+  // Allowed shortfall: 1e-3 of the largest potential (round-off and the second-order trapezoid
+  // error of the springs that continue; a spring booked only by its work would be short by its
+  // whole initial potential).
+  EXPECT_GT(worst, -1e-3 * potential_max);
+}
+
+}  // namespace
+}  // namespace plyimpact
