@@ -34,15 +34,21 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   // the node was in contact (its spring is not a new one) and that spring's gap, stiffness and
   // normal force (its potential is carried to whatever segment it finds next: apply). history key:
   // 2 * node + side.
-  std::vector<std::pair<Index, std::array<double, 11>>> history;
+  std::vector<std::pair<Index, std::array<double, 12>>> history;
   for (std::size_t i = 0; i < sn_node_.size(); ++i)
     history.push_back({2 * sn_node_[i] + sn_side_[i],
                        {sn_ft_[3 * i], sn_ft_[3 * i + 1], sn_ft_[3 * i + 2], sn_offset_[i], sn_k_[i],
                         sn_engaged_[i] ? 1.0 : 0.0, sn_gap_[i], sn_k_last_[i], sn_fn_[3 * i], sn_fn_[3 * i + 1],
-                        sn_fn_[3 * i + 2]}});
-  // The segment each node was in contact with, by its sorted nodes and side (indices change).
-  std::vector<std::array<Index, 5>> history_segment;
-  for (std::size_t i = 0; i < sn_node_.size(); ++i) history_segment.push_back(segment_key(sn_segment_[i]));
+                        sn_fn_[3 * i + 2], sn_exp_offset_[i]}});
+  // The segment each node was in contact with, by its sorted nodes and side (indices change), and
+  // every segment (to tell the faces a rebuild exposes).
+  std::vector<std::array<Index, 5>> old_keys;
+  for (std::size_t s = 0; s < seg_side_.size(); ++s) old_keys.push_back(segment_key(long(s)));
+  std::vector<std::array<Index, 5>> history_segment, history_exposure;
+  for (std::size_t i = 0; i < sn_node_.size(); ++i) {
+    history_segment.push_back(segment_key(sn_segment_[i]));
+    history_exposure.push_back(segment_key(sn_exp_seg_[i]));
+  }
   std::vector<std::pair<Index, std::array<double, 3>>> old_forces;
   for (std::size_t u = 0; u < union_nodes_.size(); ++u)
     old_forces.push_back({union_nodes_[u], {fc_prev_[3 * u], fc_prev_[3 * u + 1], fc_prev_[3 * u + 2]}});
@@ -158,6 +164,11 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   sn_gap_.assign(N, 0.0);
   sn_k_last_.assign(N, 0.0);
   sn_fn_.assign(3 * N, 0.0);
+  sn_exp_offset_.assign(N, 0.0);
+  sn_exp_seg_.assign(N, -1);
+  sn_new_.assign(N, 0);
+  seg_new_.assign(S, 0);
+  exposed_pass_ = alive != nullptr;
   if (!history.empty()) {  // restore the per-node history (once per rebuild)
     std::vector<Index> slave_of(2 * model_.num_nodes(), -1);
     for (std::size_t i = 0; i < N; ++i) slave_of[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
@@ -170,7 +181,13 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
       sn_gap_[i] = h[6];
       sn_k_last_[i] = h[7];
       for (int d = 0; d < 3; ++d) sn_fn_[3 * std::size_t(i) + d] = h[8 + std::size_t(d)];
+      sn_exp_offset_[i] = h[11];
     }
+    // What the rebuild added: nodes new to the surface and faces erosion exposed (see apply).
+    std::vector<char> known(N, 0);
+    for (const auto& entry : history)
+      if (const Index i = slave_of[std::size_t(entry.first)]; i >= 0) known[std::size_t(i)] = 1;
+    for (std::size_t i = 0; i < N; ++i) sn_new_[i] = !known[i];
     // The segment of the last pass, where it survived: its neighbours keep the full release depth
     // (find_segment), so a node pressed into the surface is not released by an erosion elsewhere.
     std::map<std::array<Index, 5>, long> segment_of;
@@ -180,6 +197,17 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
       if (i < 0 || history_segment[h][0] < 0) continue;
       if (auto it = segment_of.find(history_segment[h]); it != segment_of.end()) sn_segment_[std::size_t(i)] = it->second;
     }
+    for (std::size_t h = 0; h < history.size(); ++h) {  // exposure offsets on surviving segments
+      const Index i = slave_of[std::size_t(history[h].first)];
+      if (i < 0) continue;
+      const auto it = history_exposure[h][0] < 0 ? segment_of.end() : segment_of.find(history_exposure[h]);
+      if (it != segment_of.end()) sn_exp_seg_[std::size_t(i)] = it->second;
+      else sn_exp_offset_[std::size_t(i)] = 0;
+    }
+    std::vector<char> old_segment(S, 0);
+    for (const auto& key : old_keys)
+      if (auto it = segment_of.find(key); it != segment_of.end()) old_segment[std::size_t(it->second)] = 1;
+    for (std::size_t s = 0; s < S; ++s) seg_new_[s] = !old_segment[s];
   }
 
   // Union of all force-carrying nodes.
@@ -404,7 +432,7 @@ void PenaltyContact::sort(const double* x, double step_depth) {
   list_allowance_ = std::min(allowance_, std::max(0.2 * allowance_, 2.0 * double(def_.spec.BSORT) * step_depth));
   new_depth_cap_ = std::max(2 * step_depth, 0.125 * list_allowance_);
   refresh_all(x);
-  build_candidates(x, false);
+  build_candidates(x, exposed_pass_);  // the pass after a rebuild looks at any depth (apply)
 }
 
 void PenaltyContact::build_neighbours() {
@@ -487,7 +515,7 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
   const double* nn = &sn_normal_[3 * i];
   double nn_len = -1;
   // The in-plane pre-check assumes |gap| <= release depth, i.e. no initial-penetration offset.
-  const bool plain = sn_offset_[i] == 0;
+  const bool plain = sn_offset_[i] == 0 && sn_exp_seg_[i] < 0;
   // Distance from the closest point to the node beyond |g|: the tangential overshoot of a
   // projection clamped to the edge, at most (MAXPAR - 1) x the longest edge <= 2 r (MAXPAR - 1).
   const double r_factor = 1 + 2 * std::max(def_.spec.MAXPAR - 1, 0.0);
@@ -524,6 +552,8 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     auto reach = [&](double accept) { return r + (best_s >= 0 ? std::min(accept, -best_g) : accept); };
     const Index* q = &seg_nodes_[4 * std::size_t(s)];
     double accept = std::min(depth, catch_depth);
+    const double accept_catch = accept;
+    bool exposure = false;
     if (last >= 0) {
       const double near_depth = s == last ? depth : std::min(depth, last_depth + catch_depth);
       if (const double rn = reach(accept); d2 > rn * rn) {
@@ -533,8 +563,13 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
       } else if (shares_node_with_last(q)) {
         accept = near_depth;
       }
-    } else if (const double rn = reach(accept); d2 > rn * rn) {
-      return;
+    } else {
+      // First pass after a rebuild: a node new to the surface, or a face erosion exposed, may
+      // already lie behind the other side by more than one step's motion (apply books it as an
+      // offset, not a spring).
+      exposure = exposed_pass_ && (sn_new_[i] || seg_new_[std::size_t(s)]);
+      if (exposure) accept = depth;
+      if (const double rn = reach(accept); d2 > rn * rn) return;
     }
     if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) return;
     if (single_) {
@@ -563,7 +598,7 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     if (best_s >= 0 && double(normal_bound[0]) < 1) {
       const double m = def_.spec.MAXPAR, inv = 1 / std::sqrt(dot3(n0, n0));
       const double upper = (dx * n0[0] + dy * n0[1] + dz * n0[2] + m * m * std::abs(dot3(n0, sg + 12))) * inv;
-      if (upper - sn_offset_[i] <= best_g) return;
+      if (upper - offset_of(i, s) <= best_g) return;
     }
     // In-plane pre-check (refresh_segment): a node the projection would accept has
     // |(p - c) . a1| <= bound_xi and |(p - c) . a2| <= bound_eta; two dot products instead of the
@@ -580,8 +615,14 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     // Orientation: the node's own surface must face the segment (normals at more than ~107 deg),
     // so a node at a corner is not pushed out through a side face it merely slid under.
     if (nn_len > 0 && dot3(nn, pr.normal) > -0.3 * nn_len) return;
-    const double g = pr.gap - sn_offset_[i];
-    if (!(g < 0) || g <= -accept) return;
+    const double g = pr.gap - offset_of(i, s);
+    // A node with an exposure offset stays on that segment while it is behind the face (the offset
+    // relaxes as it backs out: apply), not only while it is deeper than the offset.
+    const bool relaxing = s == sn_exp_seg_[i] && pr.gap - sn_offset_[i] < 0;
+    if ((!(g < 0) && !relaxing) || g <= -accept) return;
+    // Deeper than a step's motion behind an exposed face only if within the face proper: beside
+    // its edge (inside only by the MAXPAR tolerance) it is a node next to a hole, not behind a face.
+    if (exposure && g <= -accept_catch && (std::abs(pr.xi) > 1 || std::abs(pr.eta) > 1)) return;
     // The nearest surface wins: the least penetrated segment (ties: the one met first, the
     // segment of the last pass).
     if (best_s < 0 || g > best_g) {
@@ -734,15 +775,33 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     sn_segment_[i] = s;
     sn_engaged_[i] = s >= 0;
     if (s < 0) {  // released: a spring's remaining potential stays in the contact energy (lost)
+      sn_exp_seg_[i] = -1;  // an exposure offset ends with the contact
+      sn_exp_offset_[i] = 0;
       ft[0] = ft[1] = ft[2] = 0;
       sn_gap_[i] = sn_k_last_[i] = 0;
       for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = 0;
       continue;
     }
+    // Erosion exposed a face already behind this node, within the face proper (or made it a surface
+    // node already behind a face): nothing crossed anything, so a spring of that depth would be energy from nowhere
+    // (0.13 J in one step of the default scene). Kept as an offset instead, like an initial
+    // penetration, but on that face only (a node beside a hole's edge "behind" the new side face is
+    // not offset against the top face it then lands on): the force starts from zero and grows with
+    // further penetration; the offset relaxes as the node backs out and ends when it leaves the face.
+    if (exposed_pass_ && last < 0 && (sn_new_[i] || seg_new_[std::size_t(s)]) && std::abs(pr.xi) <= 1 &&
+        std::abs(pr.eta) <= 1) {
+      sn_exp_seg_[i] = s;
+      sn_exp_offset_[i] = pr.gap - sn_offset_[i];
+      ++exposures_;
+    } else if (s != sn_exp_seg_[i]) {  // the offset belongs to the face it was found on
+      sn_exp_seg_[i] = -1;
+      sn_exp_offset_[i] = 0;
+    }
+    if (s == sn_exp_seg_[i]) sn_exp_offset_[i] = std::max(sn_exp_offset_[i], pr.gap - sn_offset_[i]);  // relaxes
     const Index node = sn_node_[i];
     const Index* q = &seg_nodes_[4 * std::size_t(s)];
     const double* n = pr.normal;
-    const double g = pr.gap - sn_offset_[i];
+    const double g = pr.gap - offset_of(i, s);
     const double k = stiffness(i, std::size_t(s));
     double fn = -k * g;
     double vrel[3];
@@ -837,6 +896,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   energy_ -= work + spring_correction;
   friction_energy_ += friction_work;
   dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
+  exposed_pass_ = false;
   fc_prev_.swap(fc_);
   std::copy(fc_prev_.begin(), fc_prev_.end(), fc_.begin());  // fc_ keeps the last forces for output
 }

@@ -96,6 +96,9 @@ class PenaltyContact {
   // Infinity when no spring is active.
   double spring_stable_step() const { return dt_springs_; }
   long sorts() const { return sorts_; }
+  // Nodes found behind a face at the first pass after an eroding rebuild (exposed faces, nodes new
+  // to the surface), kept as offsets instead of springs.
+  long exposed_offsets() const { return exposures_; }
 
  private:
   void build(const std::vector<double>& x, const AliveMask* alive);
@@ -112,6 +115,9 @@ class PenaltyContact {
   // Records and the node's normal are refreshed here when first looked at in a pass.
   long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth);
   void estimate_stiffness_range();
+  // Gap offset of slave node i on segment s: the initial-penetration offset plus an exposure offset
+  // when s is the segment it was found behind.
+  double offset_of(std::size_t i, long s) const { return sn_offset_[i] + (s == sn_exp_seg_[i] ? sn_exp_offset_[i] : 0.0); }
   // Identity of segment s across a rebuild: side and sorted nodes; all -1 for s < 0.
   std::array<Index, 5> segment_key(long s) const;
   // Search data of segment s at x (seg_geo_): bilinear coefficients, bounding sphere, normal bound,
@@ -172,6 +178,15 @@ class PenaltyContact {
   // The spring of the last pass (kept across a rebuild): gap g (0: none), stiffness k and normal
   // force (N, 3); its potential 0.5 k g^2 is what a segment switch starts from (apply).
   std::vector<double> sn_gap_, sn_k_last_, sn_fn_;
+  // Eroding rebuild: sn_new_ / seg_new_ mark nodes and segments the rebuild added; in the pass
+  // after it (exposed_pass_) a node without a spring that is found behind one of them gets its
+  // gap as an offset on that segment (sn_exp_offset_ <= 0 on sn_exp_seg_, kept across rebuilds,
+  // relaxed as the node backs out, cleared when it leaves that segment).
+  std::vector<char> sn_new_, seg_new_;
+  std::vector<double> sn_exp_offset_;
+  std::vector<long> sn_exp_seg_;
+  bool exposed_pass_ = false;
+  long exposures_ = 0;
   // Incremental search (LS-DYNA-style: between bucket sorts a node only looks at the segments it
   // can reach): candidates of slave node i are cand_[cand_start_[i] .. cand_start_[i + 1]), built
   // at each sort from its bucket, in bucket order.
