@@ -505,12 +505,14 @@ double PenaltyContact::stiffness(std::size_t i, std::size_t s) const {
   return std::max(k0, spec.SOFSCL * 0.5 * m / (dt_c_ * dt_c_));
 }
 
-long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& best, double new_contact_depth) {
+long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& best, double new_contact_depth,
+                                  const double* v, double dt) {
   const Index c_begin = cand_start_[i], c_end = cand_start_[i + 1];
   const long last = sn_segment_[i];
   if (c_begin == c_end && last < 0) return -1;  // nothing within reach until the next sort
   const Index node = sn_node_[i];
   const double* p = &x[3 * std::size_t(node)];
+  const double v_node = v != nullptr ? std::sqrt(dot3(&v[3 * std::size_t(node)], &v[3 * std::size_t(node)])) : 0.0;
   // The node's normal, from its own segments, once a candidate passes the sphere test.
   const double* nn = &sn_normal_[3 * i];
   double nn_len = -1;
@@ -553,15 +555,17 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     const Index* q = &seg_nodes_[4 * std::size_t(s)];
     double accept = std::min(depth, catch_depth);
     const double accept_catch = accept;
-    bool exposure = false;
+    bool exposure = false, neighbour = false;
     if (last >= 0) {
       const double near_depth = s == last ? depth : std::min(depth, last_depth + catch_depth);
       if (const double rn = reach(accept); d2 > rn * rn) {
         const double rf = reach(near_depth);
         if (d2 > rf * rf || !shares_node_with_last(q)) return;
         accept = near_depth;
+        neighbour = s != last;
       } else if (shares_node_with_last(q)) {
         accept = near_depth;
+        neighbour = s != last;
       }
     } else {
       // First pass after a rebuild: a node new to the surface, or a face erosion exposed, may
@@ -623,6 +627,16 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     // Deeper than a step's motion behind an exposed face only if within the face proper: beside
     // its edge (inside only by the MAXPAR tolerance) it is a node next to a hole, not behind a face.
     if (exposure && g <= -accept_catch && (std::abs(pr.xi) > 1 || std::abs(pr.eta) > 1)) return;
+    // The catch depth above bounds the relative motion by the fastest contact node anywhere (one
+    // number for the sphere tests); a flying fragment then lets a slow node be caught tens of um
+    // deep, a spring nobody compressed (0.06 J each in the default scene). The node can only have
+    // crossed this segment by its own and the segment nodes' motion in the step.
+    if (v != nullptr && s != last && !exposure && (neighbour || accept == accept_catch)) {
+      double vq2 = 0;
+      for (int a = 0; a < 4; ++a) vq2 = std::max(vq2, dot3(&v[3 * std::size_t(q[a])], &v[3 * std::size_t(q[a])]));
+      const double crossed = 2 * dt * (v_node + std::sqrt(vq2)) + 0.02 * depth;
+      if (g <= -std::min(depth, neighbour ? last_depth + crossed : crossed)) return;
+    }
     // The nearest surface wins: the least penetrated segment (ties: the one met first, the
     // segment of the last pass).
     if (best_s < 0 || g > best_g) {
@@ -768,18 +782,20 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   for (std::size_t i = 0; i < N; ++i) {
     Projection pr;
     const double* vi = &v[3 * std::size_t(sn_node_[i])];
-    const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max));
+    const long s = find_segment(i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max), v, dt);
     double* ft = &sn_ft_[3 * i];
     const bool entering = !sn_engaged_[i];
     const long last = sn_segment_[i];
     sn_segment_[i] = s;
     sn_engaged_[i] = s >= 0;
     if (s < 0) {  // released: a spring's remaining potential stays in the contact energy (lost)
-      sn_exp_seg_[i] = -1;  // an exposure offset ends with the contact
-      sn_exp_offset_[i] = 0;
-      ft[0] = ft[1] = ft[2] = 0;
-      sn_gap_[i] = sn_k_last_[i] = 0;
-      for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = 0;
+      if (!entering) {  // (a node that was not in contact has all of this at zero already)
+        sn_exp_seg_[i] = -1;  // an exposure offset ends with the contact
+        sn_exp_offset_[i] = 0;
+        ft[0] = ft[1] = ft[2] = 0;
+        sn_gap_[i] = sn_k_last_[i] = 0;
+        for (int d = 0; d < 3; ++d) sn_fn_[3 * i + d] = 0;
+      }
       continue;
     }
     // Erosion exposed a face already behind this node, within the face proper (or made it a surface

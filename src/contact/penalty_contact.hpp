@@ -113,7 +113,10 @@ class PenaltyContact {
   // pass (it can only have crossed the surface by its relative motion in one step; a deeper
   // "penetration" is a node beside an edge projecting onto a side face, not a real one).
   // Records and the node's normal are refreshed here when first looked at in a pass.
-  long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth);
+  // v, dt (optional): velocities and step, for the per-segment bound of what a new contact can
+  // have crossed in the step.
+  long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth,
+                    const double* v = nullptr, double dt = 0);
   void estimate_stiffness_range();
   // Gap offset of slave node i on segment s: the initial-penetration offset plus an exposure offset
   // when s is the segment it was found behind.
