@@ -20,6 +20,7 @@ struct BlockState {
   // (num_elements, 6) IHQ 6 moduli E_x', E_y', E_z', G_x'y', G_y'z', G_z'x' (solver/assumed_strain_hourglass).
   std::vector<double> hourglass_moduli;
   std::vector<double> bulk_q;            // (num_elements) last bulk-viscosity pressure q, Pa (trapezoid work)
+  std::vector<double> step_q;            // (num_elements) Q held for the stable step, m/s (element_update step_q)
   std::vector<double> internal_energy;   // (num_elements) J, stress work incl. nothing of q
   std::vector<double> hourglass_energy;  // (num_elements) J
   std::vector<double> volume;            // (num_elements) current volume, m^3 (updated every cycle)

@@ -38,6 +38,7 @@ TEST_P(Objectivity, StressRotatesWithRigidBody) {
   st.stress.assign(6 * blk.points(), 0.0);
   st.hourglass.assign(12, 0.0);
   st.bulk_q.assign(1, 0.0);
+  st.step_q.assign(1, 0.0);
   st.internal_energy.assign(1, 0.0);
   st.hourglass_energy.assign(1, 0.0);
   st.volume.assign(1, 1.0);
