@@ -23,21 +23,15 @@
 #include <cmath>
 #include <iostream>
 
+#include "punch_on_base.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
 namespace {
 
 std::string hole_scene() {
-  return std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
-         "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
-         "sections:\n  s: {ELFORM: 2}\n"
-         "parts:\n  base: {material: steel, section: s}\n  punch: {material: steel, section: s}\n"
-         "mesh:\n  merge_nodes: false\n  boxes:\n"
-         "    - {part: base, origin: [0, 0, 0], size: [0.003, 0.003, 0.002], elements: [3, 3, 2]}\n"
-         "    - {part: punch, origin: [0.0011, 0.0013, 0.002002], size: [0.0008, 0.0008, 0.0005], elements: [2, 2, 1]}\n"
-         "initial_velocity:\n  - {part: punch, velocity: [0, 0, -10]}\n"
-         "contacts:\n  - {name: hole, type: eroding_surface_to_surface, surfaces: [punch, base], SOFT: 1}\n";
+  return test::punch_on_base("[0.0011, 0.0013, 0.002002]", "[0.0008, 0.0008, 0.0005]", "[2, 2, 1]", "[0, 0, -10]",
+                             "eroding_surface_to_surface");
 }
 
 TEST(HoleEdge, NodeLiftingOffBesideAHoleIsNotCaughtByItsSideFace) {
