@@ -142,19 +142,19 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   {
     std::vector<Index> slave_index(2 * model_.num_nodes(), -1);
     for (std::size_t i = 0; i < N; ++i) slave_index[2 * std::size_t(sn_node_[i]) + sn_side_[i]] = Index(i);
-    seg_slave_.resize(4 * S);
+    std::vector<Index> seg_slave(4 * S);  // slave index of each segment node on the segment's side
     for (std::size_t s = 0; s < S; ++s)
-      for (int k = 0; k < 4; ++k) seg_slave_[4 * s + k] = slave_index[2 * std::size_t(seg_nodes_[4 * s + k]) + seg_side_[s]];
+      for (int k = 0; k < 4; ++k) seg_slave[4 * s + k] = slave_index[2 * std::size_t(seg_nodes_[4 * s + k]) + seg_side_[s]];
     // Own-side segments of each slave node (CSR, ascending segment order).
     own_start_.assign(N + 1, 0);
-    for (Index i : seg_slave_)
+    for (Index i : seg_slave)
       if (i >= 0) ++own_start_[std::size_t(i) + 1];
     for (std::size_t i = 0; i < N; ++i) own_start_[i + 1] += own_start_[i];
     own_segs_.resize(std::size_t(own_start_[N]));
     std::vector<Index> fill(own_start_.begin(), own_start_.end() - 1);
     for (std::size_t s = 0; s < S; ++s)
       for (int k = 0; k < 4; ++k)
-        if (const Index i = seg_slave_[4 * s + k]; i >= 0) own_segs_[std::size_t(fill[std::size_t(i)]++)] = Index(s);
+        if (const Index i = seg_slave[4 * s + k]; i >= 0) own_segs_[std::size_t(fill[std::size_t(i)]++)] = Index(s);
   }
   sn_normal_.assign(3 * N, 0.0);
   sn_offset_.assign(N, 0.0);
@@ -267,11 +267,7 @@ void PenaltyContact::build(const std::vector<double>& x, const AliveMask* alive)
   }
   allowance_ = 0.25 * cell_;
   seg_margin_.resize(S);
-  margin_ = 0;
-  for (std::size_t s = 0; s < S; ++s) {
-    seg_margin_[s] = seg_depth_[s] + 0.05 * extent[s] + allowance_;
-    margin_ = std::max(margin_, seg_margin_[s]);
-  }
+  for (std::size_t s = 0; s < S; ++s) seg_margin_[s] = seg_depth_[s] + 0.05 * extent[s] + allowance_;
   // Bucket edge = median extent: a segment's expanded box then spans a few buckets, and a node's
   // bucket holds few segments (measured: 10-15 % faster than an edge of extent + 2 margins).
   search_cell_ = cell_;
@@ -554,7 +550,7 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     auto reach = [&](double accept) { return r + (best_s >= 0 ? std::min(accept, -best_g) : accept); };
     const Index* q = &seg_nodes_[4 * std::size_t(s)];
     double accept = std::min(depth, catch_depth);
-    const double accept_catch = accept;
+    const double accept_catch = accept;  // what a new contact may be caught at (exposures aside)
     bool exposure = false, neighbour = false;
     if (last >= 0) {
       const double near_depth = s == last ? depth : std::min(depth, last_depth + catch_depth);
@@ -631,7 +627,7 @@ long PenaltyContact::find_segment(std::size_t i, const double* x, Projection& be
     // number for the sphere tests); a flying fragment then lets a slow node be caught tens of um
     // deep, a spring nobody compressed (0.06 J each in the default scene). The node can only have
     // crossed this segment by its own and the segment nodes' motion in the step.
-    if (v != nullptr && s != last && !exposure && (neighbour || accept == accept_catch)) {
+    if (v != nullptr && s != last && !exposure) {  // a neighbour switch or a new contact
       double vq2 = 0;
       for (int a = 0; a < 4; ++a) vq2 = std::max(vq2, dot3(&v[3 * std::size_t(q[a])], &v[3 * std::size_t(q[a])]));
       const double crossed = 2 * dt * (v_node + std::sqrt(vq2)) + 0.02 * depth;

@@ -175,7 +175,6 @@ class PenaltyContact {
   std::vector<double> sn_offset_;  // initial-penetration baseline gap (<= 0)
   std::vector<double> sn_ft_;      // (N, 3) tangential (friction) force of the last pass
   std::vector<double> sn_normal_;  // (N, 3) area-weighted outward normal of the node's own surface
-  std::vector<Index> seg_slave_;   // (S, 4) slave index of each segment node on the segment's side
   std::vector<long> sn_segment_;   // segment the node was in contact with at the last pass, -1
   std::vector<char> sn_engaged_;   // in contact at the last pass (kept across a rebuild, unlike sn_segment_)
   // The spring of the last pass (kept across a rebuild): gap g (0: none), stiffness k and normal
@@ -213,7 +212,7 @@ class PenaltyContact {
   std::vector<Index> side_segs_[2];     // grid item -> segment
   std::vector<double> boxes_[2];
   std::vector<double> seg_margin_; // (S) search margin of each segment's box, m
-  double cell_ = 0, allowance_ = 0, margin_ = 0, search_cell_ = 0;  // median extent, allowance, largest margin, bucket edge
+  double cell_ = 0, allowance_ = 0, search_cell_ = 0;  // median extent, allowance, bucket edge
   long cycles_since_sort_ = 0, sorts_ = 0;
   double energy_ = 0, friction_energy_ = 0;
   ContactForces forces_;
