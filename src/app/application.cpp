@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/dcb_reduce_command.hpp"
 #include "app/mesh_export.hpp"
+#include "app/plot_command.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
@@ -20,7 +22,7 @@ namespace plyimpact::app {
 
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kUsageHead =
     "usage: plyimpact <command> [options]\n"
     "\n"
     "commands:\n"
@@ -33,9 +35,12 @@ constexpr const char* kUsage =
     "                            <scene>_mesh.vtu (parts, plies, ply angles, material axes,\n"
     "                            interfaces) and <scene>.msh (gmsh)\n"
     "  --help                    this text\n"
-    "  --version                 program version\n"
+    "  --version                 program version\n";
+constexpr const char* kUsageTail =
     "\n"
     "exit codes: 0 success, 1 invalid scene, 2 run stopped early (see summary.json), 64 bad usage\n";
+
+std::string usage() { return std::string(kUsageHead) + kDcbReduceUsage + kPlotUsage + kUsageTail; }
 
 struct Loaded {
   config::Scene scene;
@@ -179,27 +184,29 @@ int run(const std::string& path, const std::string& out_dir, std::ostream& out) 
 int run_application(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   try {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-      (args.empty() ? err : out) << kUsage;
+      (args.empty() ? err : out) << usage();
       return args.empty() ? 64 : 0;
     }
     if (args[0] == "--version") {
       out << "plyimpact " << PLYIMPACT_VERSION << "\n";
       return 0;
     }
+    if (args[0] == "dcb-reduce") return dcb_reduce_command({args.begin() + 1, args.end()}, out, err);
+    if (args[0] == "plot") return plot_command({args.begin() + 1, args.end()}, out, err);
     if ((args[0] == "run" || args[0] == "check" || args[0] == "mesh") && args.size() >= 2) {
       std::string out_dir;
       for (std::size_t i = 2; i < args.size(); ++i) {
         if ((args[i] == "-o" || args[i] == "--output") && i + 1 < args.size() && (args[0] == "run" || args[0] == "mesh")) {
           out_dir = args[++i];
         } else {
-          err << "plyimpact: unexpected argument '" << args[i] << "'\n" << kUsage;
+          err << "plyimpact: unexpected argument '" << args[i] << "'\n" << usage();
           return 64;
         }
       }
       if (args[0] == "mesh") return mesh_command(args[1], out_dir, out);
       return args[0] == "run" ? run(args[1], out_dir, out) : check(args[1], out);
     }
-    err << "plyimpact: unknown command or missing scene file\n" << kUsage;
+    err << "plyimpact: unknown command or missing scene file\n" << usage();
     return 64;
   } catch (const InputError& e) {
     err << "error: " << e.what() << "\n";
