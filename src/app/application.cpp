@@ -34,6 +34,10 @@ constexpr const char* kUsageHead =
     "  mesh SCENE.yaml [-o DIR]  mesh the scene and write it for inspection (default results/<scene>):\n"
     "                            <scene>_mesh.vtu (parts, plies, ply angles, material axes,\n"
     "                            interfaces) and <scene>.msh (gmsh)\n"
+    "  run, check and mesh also take  --set key.path=value [...]  (change a scene value before it is\n"
+    "                            read: units and validation as in the file, e.g. --set control.tssfac=0.8\n"
+    "                            --set impactor.velocity='5 m/s' --set contacts[0].SOFT=2) and\n"
+    "                            --threads N (same as --set control.threads=N)\n"
     "  --help                    this text\n"
     "  --version                 program version\n";
 constexpr const char* kUsageTail =
@@ -48,10 +52,12 @@ struct Loaded {
   model::Model model;
 };
 
+using Overrides = std::vector<config::SceneOverride>;
+
 // Boxes, or the gmsh laminate mesher and the impactor when the scene has a laminate.
-Loaded load(const std::string& path) {
+Loaded load(const std::string& path, const Overrides& overrides) {
   Loaded l;
-  l.scene = config::load_scene(path);
+  l.scene = config::load_scene(path, overrides);
   l.mesh = mesh::mesh_scene(l.scene);
   l.model = model::build_model(l.scene, l.mesh);
   return l;
@@ -75,8 +81,31 @@ void print_mesher_extras(const model::Model& m, std::ostream& out) {
   }
 }
 
-int mesh_command(const std::string& path, const std::string& out_dir, std::ostream& out) {
-  const Loaded l = load(path);
+// `--set key.path=value [key.path=value ...]` and `--threads N` at args[i]: appends to `overrides`,
+// advances i past what it used and returns true; false when args[i] is neither.
+bool parse_override_option(const std::vector<std::string>& args, std::size_t& i, Overrides& overrides) {
+  if (args[i] == "--set" && i + 1 < args.size()) {
+    overrides.push_back(config::parse_set_argument(args[++i]));
+    while (i + 1 < args.size() && !args[i + 1].starts_with("-") && args[i + 1].find('=') != std::string::npos)
+      overrides.push_back(config::parse_set_argument(args[++i]));
+    return true;
+  }
+  if (args[i] == "--threads" && i + 1 < args.size()) {
+    overrides.push_back(config::threads_override(args[++i]));
+    return true;
+  }
+  return false;
+}
+
+void print_overrides(const Overrides& overrides, std::ostream& out) {
+  if (overrides.empty()) return;
+  out << "  overrides:";
+  for (const auto& o : overrides) out << " " << o.origin << ";";
+  out << "\n";
+}
+
+int mesh_command(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out) {
+  const Loaded l = load(path, overrides);
   const auto dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
   out << "plyimpact mesh: " << path << ": " << l.model.num_nodes() << " nodes, " << l.model.num_elements()
       << " elements, " << l.model.parts.size() << " parts\n";
@@ -95,12 +124,13 @@ std::size_t memory_estimate(const model::Model& m) {
   return bytes;
 }
 
-int check(const std::string& path, std::ostream& out) {
-  const Loaded l = load(path);
+int check(const std::string& path, const Overrides& overrides, std::ostream& out) {
+  const Loaded l = load(path, overrides);
   const model::Model& m = l.model;
   const solver::Solver solver(m);  // evaluates the initial stable step
   char buf[256];
   out << "plyimpact check: " << path << ": scene is valid\n";
+  print_overrides(overrides, out);
   out << "  units: " << l.scene.unit_system << " (internally SI)\n";
   out << "  nodes: " << m.num_nodes() << ", elements: " << m.num_elements() << "\n";
   out << "  parts:\n";
@@ -156,14 +186,15 @@ int check(const std::string& path, std::ostream& out) {
   return 0;
 }
 
-int run(const std::string& path, const std::string& out_dir, std::ostream& out) {
-  const Loaded l = load(path);
+int run(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out) {
+  const Loaded l = load(path, overrides);
   solver::RunOptions options;
   options.output_dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
   options.progress = &out;
   options.progress_in_place = (&out == &std::cout) && isatty(STDOUT_FILENO);
   out << "plyimpact " << PLYIMPACT_VERSION << ": running " << path << " (" << l.model.num_nodes() << " nodes, "
       << l.model.num_elements() << " elements)\n";
+  print_overrides(overrides, out);
   const solver::RunReport r = solver::run_model(l.model, options);
   for (const auto& w : r.warnings) out << "warning: " << w << "\n";
   char buf[256];
@@ -195,7 +226,9 @@ int run_application(const std::vector<std::string>& args, std::ostream& out, std
     if (args[0] == "plot") return plot_command({args.begin() + 1, args.end()}, out, err);
     if ((args[0] == "run" || args[0] == "check" || args[0] == "mesh") && args.size() >= 2) {
       std::string out_dir;
+      Overrides overrides;
       for (std::size_t i = 2; i < args.size(); ++i) {
+        if (parse_override_option(args, i, overrides)) continue;
         if ((args[i] == "-o" || args[i] == "--output") && i + 1 < args.size() && (args[0] == "run" || args[0] == "mesh")) {
           out_dir = args[++i];
         } else {
@@ -203,8 +236,8 @@ int run_application(const std::vector<std::string>& args, std::ostream& out, std
           return 64;
         }
       }
-      if (args[0] == "mesh") return mesh_command(args[1], out_dir, out);
-      return args[0] == "run" ? run(args[1], out_dir, out) : check(args[1], out);
+      if (args[0] == "mesh") return mesh_command(args[1], out_dir, overrides, out);
+      return args[0] == "run" ? run(args[1], out_dir, overrides, out) : check(args[1], overrides, out);
     }
     err << "plyimpact: unknown command or missing scene file\n" << usage();
     return 64;
