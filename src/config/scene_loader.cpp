@@ -707,7 +707,7 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
 
 Scene load_scene_from_string(const std::string& yaml_text, const std::string& file_label,
                              const std::vector<SceneOverride>& overrides) {
-  detail::Context ctx{file_label, {}, {}};
+  detail::Context ctx{file_label, {}};
   Scene scene;
   try {
     YAML::Node root;

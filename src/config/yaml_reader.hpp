@@ -31,7 +31,7 @@ struct OverrideNode {
 struct Context {
   std::string file;
   units::UnitSystem unit_system;  // set once `units:` has been read
-  std::vector<OverrideNode> override_nodes;
+  std::vector<OverrideNode> override_nodes{};  // empty when the scene is read without overrides
 };
 
 // Applies `overrides` in order to the tree `root` (a mapping) and records in ctx the nodes they
