@@ -37,12 +37,13 @@ constexpr const char* kUsageHead =
     "  run, check and mesh also take  --set key.path=value [...]  (change a scene value before it is\n"
     "                            read: units and validation as in the file, e.g. --set control.tssfac=0.8\n"
     "                            --set impactor.velocity='5 m/s' --set contacts[0].SOFT=2) and\n"
-    "                            --threads N (same as --set control.threads=N)\n"
-    "  --help                    this text\n"
-    "  --version                 program version\n";
+    "                            --threads N (same as --set control.threads=N)\n";
 constexpr const char* kUsageTail =
+    "  --help                    this text\n"
+    "  --version                 program version\n"
     "\n"
-    "exit codes: 0 success, 1 invalid scene, 2 run stopped early (see summary.json), 64 bad usage\n";
+    "exit codes: 0 success, 1 invalid input (scene, override, data file), 2 run stopped early (see\n"
+    "summary.json) or an output could not be written, 64 bad usage\n";
 
 std::string usage() { return std::string(kUsageHead) + kDcbReduceUsage + kPlotUsage + kUsageTail; }
 
