@@ -45,7 +45,7 @@ std::string script_for(const CsvPlot& p, const fs::path& out) {
   s << "set terminal pngcairo size " << p.width << "," << p.height << " enhanced font 'sans,11'\n"
     << "set output " << quoted(out.string()) << "\n"
     << "set datafile separator ','\n"
-    << "set grid\nset key top left box opaque Left reverse\n"
+    << "set grid\nset key top left box opaque Left reverse width 2\n"
     << "set title " << quoted(p.title) << " noenhanced\n"
     << "set xlabel " << quoted(p.x_label.empty() ? p.x_column : p.x_label) << " noenhanced\n"
     << "set ylabel " << quoted(p.y_label.empty() ? p.series.front().y_column : p.y_label) << " noenhanced\n";
