@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config
   libgmsh-dev libeigen3-dev libvtk9-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev
+  gnuplot-nox   # PNG plots (plyimpact plot, dcb-reduce), headless: pngcairo terminal, no X11
 )
 
 missing=()

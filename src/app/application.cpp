@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/dcb_reduce_command.hpp"
 #include "app/mesh_export.hpp"
+#include "app/plot_command.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
@@ -20,7 +22,7 @@ namespace plyimpact::app {
 
 namespace {
 
-constexpr const char* kUsage =
+constexpr const char* kUsageHead =
     "usage: plyimpact <command> [options]\n"
     "\n"
     "commands:\n"
@@ -32,10 +34,18 @@ constexpr const char* kUsage =
     "  mesh SCENE.yaml [-o DIR]  mesh the scene and write it for inspection (default results/<scene>):\n"
     "                            <scene>_mesh.vtu (parts, plies, ply angles, material axes,\n"
     "                            interfaces) and <scene>.msh (gmsh)\n"
+    "  run, check and mesh also take  --set key.path=value [...]  (change a scene value before it is\n"
+    "                            read: units and validation as in the file, e.g. --set control.tssfac=0.8\n"
+    "                            --set impactor.velocity='5 m/s' --set contacts[0].SOFT=2) and\n"
+    "                            --threads N (same as --set control.threads=N)\n";
+constexpr const char* kUsageTail =
     "  --help                    this text\n"
     "  --version                 program version\n"
     "\n"
-    "exit codes: 0 success, 1 invalid scene, 2 run stopped early (see summary.json), 64 bad usage\n";
+    "exit codes: 0 success, 1 invalid input (scene, override, data file), 2 run stopped early (see\n"
+    "summary.json) or an output could not be written, 64 bad usage\n";
+
+std::string usage() { return std::string(kUsageHead) + kDcbReduceUsage + kPlotUsage + kUsageTail; }
 
 struct Loaded {
   config::Scene scene;
@@ -43,10 +53,12 @@ struct Loaded {
   model::Model model;
 };
 
+using Overrides = std::vector<config::SceneOverride>;
+
 // Boxes, or the gmsh laminate mesher and the impactor when the scene has a laminate.
-Loaded load(const std::string& path) {
+Loaded load(const std::string& path, const Overrides& overrides) {
   Loaded l;
-  l.scene = config::load_scene(path);
+  l.scene = config::load_scene(path, overrides);
   l.mesh = mesh::mesh_scene(l.scene);
   l.model = model::build_model(l.scene, l.mesh);
   return l;
@@ -70,8 +82,31 @@ void print_mesher_extras(const model::Model& m, std::ostream& out) {
   }
 }
 
-int mesh_command(const std::string& path, const std::string& out_dir, std::ostream& out) {
-  const Loaded l = load(path);
+// `--set key.path=value [key.path=value ...]` and `--threads N` at args[i]: appends to `overrides`,
+// advances i past what it used and returns true; false when args[i] is neither.
+bool parse_override_option(const std::vector<std::string>& args, std::size_t& i, Overrides& overrides) {
+  if (args[i] == "--set" && i + 1 < args.size()) {
+    overrides.push_back(config::parse_set_argument(args[++i]));
+    while (i + 1 < args.size() && !args[i + 1].starts_with("-") && args[i + 1].find('=') != std::string::npos)
+      overrides.push_back(config::parse_set_argument(args[++i]));
+    return true;
+  }
+  if (args[i] == "--threads" && i + 1 < args.size()) {
+    overrides.push_back(config::threads_override(args[++i]));
+    return true;
+  }
+  return false;
+}
+
+void print_overrides(const Overrides& overrides, std::ostream& out) {
+  if (overrides.empty()) return;
+  out << "  overrides:";
+  for (const auto& o : overrides) out << " " << o.origin << ";";
+  out << "\n";
+}
+
+int mesh_command(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out) {
+  const Loaded l = load(path, overrides);
   const auto dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
   out << "plyimpact mesh: " << path << ": " << l.model.num_nodes() << " nodes, " << l.model.num_elements()
       << " elements, " << l.model.parts.size() << " parts\n";
@@ -90,12 +125,13 @@ std::size_t memory_estimate(const model::Model& m) {
   return bytes;
 }
 
-int check(const std::string& path, std::ostream& out) {
-  const Loaded l = load(path);
+int check(const std::string& path, const Overrides& overrides, std::ostream& out) {
+  const Loaded l = load(path, overrides);
   const model::Model& m = l.model;
   const solver::Solver solver(m);  // evaluates the initial stable step
   char buf[256];
   out << "plyimpact check: " << path << ": scene is valid\n";
+  print_overrides(overrides, out);
   out << "  units: " << l.scene.unit_system << " (internally SI)\n";
   out << "  nodes: " << m.num_nodes() << ", elements: " << m.num_elements() << "\n";
   out << "  parts:\n";
@@ -151,14 +187,15 @@ int check(const std::string& path, std::ostream& out) {
   return 0;
 }
 
-int run(const std::string& path, const std::string& out_dir, std::ostream& out) {
-  const Loaded l = load(path);
+int run(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out) {
+  const Loaded l = load(path, overrides);
   solver::RunOptions options;
   options.output_dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
   options.progress = &out;
   options.progress_in_place = (&out == &std::cout) && isatty(STDOUT_FILENO);
   out << "plyimpact " << PLYIMPACT_VERSION << ": running " << path << " (" << l.model.num_nodes() << " nodes, "
       << l.model.num_elements() << " elements)\n";
+  print_overrides(overrides, out);
   const solver::RunReport r = solver::run_model(l.model, options);
   for (const auto& w : r.warnings) out << "warning: " << w << "\n";
   char buf[256];
@@ -179,27 +216,31 @@ int run(const std::string& path, const std::string& out_dir, std::ostream& out) 
 int run_application(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   try {
     if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
-      (args.empty() ? err : out) << kUsage;
+      (args.empty() ? err : out) << usage();
       return args.empty() ? 64 : 0;
     }
     if (args[0] == "--version") {
       out << "plyimpact " << PLYIMPACT_VERSION << "\n";
       return 0;
     }
+    if (args[0] == "dcb-reduce") return dcb_reduce_command({args.begin() + 1, args.end()}, out, err);
+    if (args[0] == "plot") return plot_command({args.begin() + 1, args.end()}, out, err);
     if ((args[0] == "run" || args[0] == "check" || args[0] == "mesh") && args.size() >= 2) {
       std::string out_dir;
+      Overrides overrides;
       for (std::size_t i = 2; i < args.size(); ++i) {
+        if (parse_override_option(args, i, overrides)) continue;
         if ((args[i] == "-o" || args[i] == "--output") && i + 1 < args.size() && (args[0] == "run" || args[0] == "mesh")) {
           out_dir = args[++i];
         } else {
-          err << "plyimpact: unexpected argument '" << args[i] << "'\n" << kUsage;
+          err << "plyimpact: unexpected argument '" << args[i] << "'\n" << usage();
           return 64;
         }
       }
-      if (args[0] == "mesh") return mesh_command(args[1], out_dir, out);
-      return args[0] == "run" ? run(args[1], out_dir, out) : check(args[1], out);
+      if (args[0] == "mesh") return mesh_command(args[1], out_dir, overrides, out);
+      return args[0] == "run" ? run(args[1], out_dir, overrides, out) : check(args[1], overrides, out);
     }
-    err << "plyimpact: unknown command or missing scene file\n" << kUsage;
+    err << "plyimpact: unknown command or missing scene file\n" << usage();
     return 64;
   } catch (const InputError& e) {
     err << "error: " << e.what() << "\n";

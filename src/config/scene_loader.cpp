@@ -705,7 +705,8 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
 
 }  // namespace
 
-Scene load_scene_from_string(const std::string& yaml_text, const std::string& file_label) {
+Scene load_scene_from_string(const std::string& yaml_text, const std::string& file_label,
+                             const std::vector<SceneOverride>& overrides) {
   detail::Context ctx{file_label, {}};
   Scene scene;
   try {
@@ -717,6 +718,7 @@ Scene load_scene_from_string(const std::string& yaml_text, const std::string& fi
                              << "; found text that is not valid YAML here (or on the line before)"
                              << "; allowed a YAML mapping (check indentation, ':' after keys, closing ] and })");
     }
+    detail::apply_overrides(root, overrides, ctx);
     YAML::Mark start;  // 1:1
     scene = read_scene(Reader(root, "", &ctx, start), ctx);
   } catch (const YAML::Exception& e) {  // should not happen: Reader checks types before access
@@ -727,7 +729,7 @@ Scene load_scene_from_string(const std::string& yaml_text, const std::string& fi
   return scene;
 }
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides) {
   std::error_code ec;
   std::ifstream in;
   if (!std::filesystem::is_directory(path, ec)) in.open(path, std::ios::binary);
@@ -737,7 +739,7 @@ Scene load_scene(const std::string& path) {
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw InputError(msg() << path << ": error while reading the scene file");
-  return load_scene_from_string(text.str(), path);
+  return load_scene_from_string(text.str(), path, overrides);
 }
 
 }  // namespace plyimpact::config

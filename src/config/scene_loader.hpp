@@ -6,17 +6,21 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
+#include "config/overrides.hpp"
 #include "config/scene.hpp"
 
 namespace plyimpact::config {
 
-/// Reads and validates the scene file at `path`. Scene::name = file stem, Scene::file = path.
-/// @throws InputError (file cannot be read, or any problem in its content)
-Scene load_scene(const std::string& path);
+/// Reads and validates the scene file at `path`, after applying `overrides` (config/overrides.hpp)
+/// to its tree. Scene::name = file stem, Scene::file = path.
+/// @throws InputError (file cannot be read, or any problem in its content or an override)
+Scene load_scene(const std::string& path, const std::vector<SceneOverride>& overrides = {});
 
 /// Same from text; `file_label` is used in messages, Scene::file and (its stem) Scene::name.
 /// @throws InputError
-Scene load_scene_from_string(const std::string& yaml_text, const std::string& file_label);
+Scene load_scene_from_string(const std::string& yaml_text, const std::string& file_label,
+                             const std::vector<SceneOverride>& overrides = {});
 
 }  // namespace plyimpact::config

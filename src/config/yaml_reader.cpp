@@ -86,7 +86,20 @@ std::string join(const std::vector<std::string>& names) {
 Reader::Reader(YAML::Node node, std::string path, const Context* ctx, YAML::Mark fallback, YAML::Mark key_mark)
     : node_(std::move(node)), path_(std::move(path)), ctx_(ctx), fallback_(fallback), key_mark_(key_mark) {}
 
+const std::string* Reader::override_origin() const {
+  if (!node_.IsDefined()) return nullptr;
+  for (const auto& o : ctx_->override_nodes)
+    if (o.node.is(node_)) return &o.origin;
+  return nullptr;
+}
+
+std::string Reader::location_text() const {
+  if (const std::string* origin = override_origin()) return *origin;
+  return location(ctx_->file, mark());
+}
+
 YAML::Mark Reader::mark() const {
+  if (override_origin()) return YAML::Mark::null_mark();  // no file position; where() names the override
   const bool empty = !node_.IsDefined() || node_.IsNull();
   if (empty && !key_mark_.is_null()) return key_mark_;
   const YAML::Mark m = node_.IsDefined() ? node_.Mark() : YAML::Mark::null_mark();
@@ -94,6 +107,7 @@ YAML::Mark Reader::mark() const {
 }
 
 SourceLocation Reader::where() const {
+  if (const std::string* origin = override_origin()) return {*origin, 0, 0, path_};
   const YAML::Mark m = mark();
   return {ctx_->file, m.is_null() ? 0 : m.line + 1, m.is_null() ? 0 : m.column + 1, path_};
 }
@@ -103,7 +117,7 @@ void Reader::fail(const std::string& what, const std::string& allowed) const {
 }
 
 void Reader::fail(const std::string& what, const std::string& found, const std::string& allowed) const {
-  throw InputError(msg() << location(ctx_->file, mark()) << ": " << (path_.empty() ? "(top level)" : path_)
+  throw InputError(msg() << location_text() << ": " << (path_.empty() ? "(top level)" : path_)
                          << ": " << what << "; found " << found << "; allowed " << allowed);
 }
 
@@ -160,7 +174,7 @@ bool Reader::has(std::string_view key) const { return find(key).has_value(); }
 Reader Reader::at(std::string_view key, const std::string& expected) const {
   if (auto r = find(key)) return *r;
   const std::string key_path = path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-  throw InputError(msg() << location(ctx_->file, mark()) << ": " << key_path << ": missing required key "
+  throw InputError(msg() << location_text() << ": " << key_path << ": missing required key "
                          << quoted(key) << "; found " << found_text() << "; allowed " << expected);
 }
 

@@ -14,16 +14,30 @@
 #include <utility>
 #include <vector>
 
+#include "config/overrides.hpp"
 #include "config/scene.hpp"
 #include "core/types.hpp"
 #include "core/units.hpp"
 
 namespace plyimpact::config::detail {
 
+// A node that a command-line override put into the tree (the value, its descendants, and a key it
+// added); messages about it name the override instead of a file position.
+struct OverrideNode {
+  YAML::Node node;
+  std::string origin;  // "--set key.path=value"
+};
+
 struct Context {
   std::string file;
   units::UnitSystem unit_system;  // set once `units:` has been read
+  std::vector<OverrideNode> override_nodes{};  // empty when the scene is read without overrides
 };
+
+// Applies `overrides` in order to the tree `root` (a mapping) and records in ctx the nodes they
+// create. Structural problems (index out of range, a value where a section is needed, a value that
+// is not YAML) throw InputError naming the override; everything else is left to the scene reader.
+void apply_overrides(YAML::Node& root, const std::vector<SceneOverride>& overrides, Context& ctx);
 
 // Allowed range of a number; text() gives "> 0", "in (0, 1]", ...
 struct Limits {
@@ -113,6 +127,10 @@ class Reader {
 
  private:
   Reader child(const YAML::Node& n, std::string path, YAML::Mark key_mark = YAML::Mark::null_mark()) const;
+  // The override this node came from, or nullptr for a node of the file.
+  const std::string* override_origin() const;
+  // "file:line:col", or the override's text for a node an override supplied.
+  std::string location_text() const;
 
   YAML::Node node_;
   std::string path_;
