@@ -194,7 +194,9 @@ TaylorResult run_taylor(int n, int k, int nz, int elform, double t_end) {
   return r;
 }
 
-TEST(TaylorBar, OneDimensionalTheoryIsConsistent) {
+// Checks the test's own reference (front_strain, taylor_1d), not project code: the answer the
+// bar is compared with must itself be right.
+TEST(TaylorBar, ReferenceTheoryMatchesItsClosedFormWithoutHardening) {
   // The 1-D theory itself: without hardening, Taylor's relation rho v0^2 / sigma_y = e^2 / (1 - e)
   // at the face has the closed-form root e = (-a + sqrt(a^2 + 4a)) / 2, a = rho v0^2 / sigma_y.
   const double a = kRho * kV0 * kV0 / kSigy;
