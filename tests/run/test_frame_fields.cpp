@@ -1,7 +1,7 @@
 // The fields of a written frame, read back with VTK's XML reader, against values computed in the
 // test from the scene alone: a 1 mm cube of a 45 degree ply (*MAT_002 and *MAT_054, the same
 // elastic constants) pulled along global x to a twentieth of the *MAT_054 matrix failure strain
-// (elastic; the axes of *MAT_054 in frames were once left at the global axes).
+// (elastic; a frame that left *MAT_054 cells in global axes fails here).
 //
 // Boundary conditions (as in tests/damage/test_mat054_element_rotated.cpp): x = 0 face fixed in x,
 // z = 0 face fixed in z, edge x = y = 0 fixed in y, x = L face pulled with a velocity ramped from 0
