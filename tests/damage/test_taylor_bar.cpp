@@ -262,8 +262,8 @@ TEST(TaylorBar, CopperBarAgainstTaylorTheory) {
     EXPECT_LT(r->kinetic_fraction, 0.05);  // nearly all the kinetic energy went into plastic work
     // Plastic flow keeps the volume: length and face radius must describe the same amount of
     // copper (a shortening without the matching spread would show here). What remains is elastic:
-    // residual pressures below the yield stress, |dV/V| <= SIGY / K = 0.3 %; 0.5 % asserted.
-    EXPECT_LT(std::abs(r->volume_change), 0.005);
+    // residual pressures below the yield stress, |dV/V| <= SIGY / K = 0.31 % (measured <= 0.04 %).
+    EXPECT_LT(std::abs(r->volume_change), kSigy * 3 * (1 - 2 * kNu) / kE);
   }
   const double dl = fine.final_length / coarse.final_length - 1, dr = fine.face_radius / coarse.face_radius - 1;
   std::cout << "mesh change coarse -> fine: length " << 100 * dl << " %, face radius " << 100 * dr << " %\n";
