@@ -20,7 +20,8 @@
 //    incrementally (Hughes-Winget), which differs from the polar rotation at second order in the
 //    strain (2e-4)^2 ~ 4e-8 rad; 2e-5 on the components still separates 45 degrees from 0 by far.
 //  - stress_material: sigma_aa = s c^2, sigma_bb = s s^2, sigma_ab = -s s c for uniaxial s =
-//    sigma_x at the current ply angle; with the axis tolerance above, 1e-4 s.
+//    sigma_x at the current ply angle; with the axis tolerance above, 1e-4 s. strain_material: the
+//    Hencky strain turned into the same axes, to 2e-5 of the strain.
 //  - stress: s against the off-axis modulus Ex = 1 / (c^4/E1 + (1/G12 - 2 nu12/E1) s^2 c^2 +
 //    s^4/E2) times the Hencky strain: 0.5 %. Two effects: the dynamic overshoot of the ramped pull
 //    (< 0.1 %), and the strain measure (total-Lagrangian Green strain for *MAT_002, rotated
@@ -131,7 +132,8 @@ TEST_P(FrameFields, WrittenFieldsOfAPulledFortyFiveDegreePlyMatchHandValues) {
   const double sx = sigma[0];
   const double nu12 = kPRBA * kE1 / kE2, c0 = std::sqrt(0.5), s0 = std::sqrt(0.5);
   const double ex = 1 / (std::pow(c0, 4) / kE1 + (1 / kG12 - 2 * nu12 / kE1) * s0 * s0 * c0 * c0 + std::pow(s0, 4) / kE2);
-  std::cout << "sigma " << sigma[0] << " " << sigma[1] << " " << sigma[2] << " " << sigma[3] << " " << sigma[4] << " " << sigma[5] << " strain " << hencky(0,0) << " ratio " << sx / (ex * hencky(0, 0)) << "\n";
+  std::cout << GetParam() << ": sigma_x " << sx << " Pa at Hencky strain " << hencky(0, 0) << ", against Ex eps: "
+            << sx / (ex * hencky(0, 0)) << "; material a axis (" << a[0] << ", " << a[1] << ", " << a[2] << ")\n";
   EXPECT_NEAR(sx, ex * hencky(0, 0), 5e-3 * ex * hencky(0, 0));
   for (int k = 1; k < 6; ++k) EXPECT_NEAR(sigma[k], 0.0, 1e-3 * sx) << "stress component " << k;
 
@@ -143,6 +145,16 @@ TEST_P(FrameFields, WrittenFieldsOfAPulledFortyFiveDegreePlyMatchHandValues) {
   EXPECT_NEAR(sm[3], -sx * sn * c, 1e-4 * sx);
   EXPECT_NEAR(sm[4], 0.0, 1e-4 * sx);
   EXPECT_NEAR(sm[5], 0.0, 1e-4 * sx);
+
+  // The strain in the ply's axes: the Hencky strain above turned by the hand axes (rows a, b, c);
+  // the axis tolerance 2e-5 times the strain's size.
+  Eigen::Matrix3d Q;
+  Q << c, sn, 0, -sn, c, 0, 0, 0, 1;
+  const Eigen::Matrix3d em = Q * hencky * Q.transpose();
+  const auto strain_m = f.cell("strain_material", 0);
+  const double want_m[6] = {em(0, 0), em(1, 1), em(2, 2), em(0, 1), em(1, 2), em(2, 0)};
+  for (int k = 0; k < 6; ++k)
+    EXPECT_NEAR(strain_m[k], want_m[k], 2e-5 * hencky(0, 0)) << "strain_material component " << k;
 }
 
 INSTANTIATE_TEST_SUITE_P(Card, FrameFields, ::testing::Values("MAT_002", "MAT_054"),
