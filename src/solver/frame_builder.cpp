@@ -68,7 +68,7 @@ output::Frame make_frame(const Solver& solver) {
   for (std::size_t b = 0; b < model.blocks.size(); ++b) {
     const auto& blk = model.blocks[b];
     const auto& st = state.blocks[b];
-    const bool ortho = model.materials[blk.material].kind == model::MaterialKind::OrthotropicElastic;
+    const auto kind = model.materials[blk.material].kind;
     for (std::size_t e = 0; e < blk.size(); ++e) {
       const Index* conn = &blk.conn[8 * e];
       frame.hex_connectivity.insert(frame.hex_connectivity.end(), conn, conn + 8);
@@ -102,7 +102,12 @@ output::Frame make_frame(const Solver& solver) {
       sigma /= points;
 
       Eigen::Matrix3d Q = Eigen::Matrix3d::Identity();  // rows: current material axes
-      if (ortho) {
+      if (kind == model::MaterialKind::CompositeDamage) {
+        // *MAT_054 keeps its own axes, rotated with the element's spin: report the ones its
+        // stress and failure criteria are evaluated in.
+        const double* ax = &st.axes[9 * e];
+        Q << ax[0], ax[1], ax[2], ax[3], ax[4], ax[5], ax[6], ax[7], ax[8];
+      } else if (kind == model::MaterialKind::OrthotropicElastic) {
         const auto& ax = model.orientations[blk.orientation[e]].axes;
         Eigen::Matrix3d Q0;
         Q0 << ax[0], ax[1], ax[2], ax[3], ax[4], ax[5], ax[6], ax[7], ax[8];

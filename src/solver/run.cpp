@@ -85,9 +85,13 @@ void add_history_row(const Solver& solver, output::HistoryTable& table) {
     row.push_back(e.rigid_wall);
     for (const auto& w : solver.rigid_walls()) row.insert(row.end(), {w.normal_force(), w.tangential_force()});
   }
+  // The row is at t^n, the balance's time; after the step a body's centre is at t^{n+1}: step it
+  // back by its velocity of that step (exact for the centre's update). v is v^{n+1/2}.
+  const double back = s.dt_prev_half;
   for (const auto& b : solver.rigid_bodies())
-    row.insert(row.end(), {b.x[0], b.x[1], b.x[2], b.v[0], b.v[1], b.v[2], b.a[0], b.a[1], b.a[2], b.contact_force[0],
-                           b.contact_force[1], b.contact_force[2]});
+    row.insert(row.end(), {b.x[0] - back * b.v[0], b.x[1] - back * b.v[1], b.x[2] - back * b.v[2], b.v[0], b.v[1],
+                           b.v[2], b.a[0], b.a[1], b.a[2], b.contact_force[0], b.contact_force[1],
+                           b.contact_force[2]});
   if (can_erode(solver.model())) row.insert(row.end(), {double(s.eroded_elements), s.eroded_energy});
   table.add_row(row);
 }

@@ -77,19 +77,24 @@ TEST(HoleEdge, NodeLiftingOffBesideAHoleIsNotCaughtByItsSideFace) {
 // The same drop with the punch's edge only 5 um inside the hole's edge: within the depth at which
 // a node not in contact is still caught (its one-step motion plus 2 % of the release depth, ~10 um
 // here), so the side face takes the approaching edge nodes as a new contact 5 um deep, a spring
-// nobody compressed. That energy is created by the discrete model and cannot be avoided without
-// a smaller catch allowance; it must be booked (apply: a new spring is booked at its potential) so
-// that the contact energy never falls below the potential of its active springs (sum 0.5 k g^2,
-// computed from the state, independently of the work booking) and the creation shows in the
-// energy ratio (printed; the run's energy-ratio stop is switched off) instead of as negative
-// contact energy.
-TEST(HoleEdge, SpringCaughtWithinTheCatchDepthIsBookedAtItsPotential) {
+// nobody compressed.
+std::string hole5_scene() {
   std::string yaml = hole_scene();
   const std::string from = "origin: [0.0011, 0.0013, 0.002002]", to = "origin: [0.0011, 0.001205, 0.002002]";
   yaml.replace(yaml.find(from), from.size(), to);
   const std::string ctl = "control: {termination_time: 1.0}";
   yaml.replace(yaml.find(ctl), ctl.size(), "control: {termination_time: 1.0, energy_ratio_limit: 0}");
-  const model::Model model = test::model_from_yaml(yaml, "hole5.yaml");
+  return yaml;
+}
+
+// Booking: the contact energy (accumulated work of the contact forces, sum f . dx) never falls
+// below the potential of the active springs (sum 0.5 k g^2 from the current gaps): two different
+// computations of the contact's energy, so a new spring booked only through its work would show
+// here as a shortfall of its whole initial potential. Allowed shortfall: 1e-3 of the largest
+// potential (round-off and the second-order trapezoid error of the springs that continue). This is
+// a consistency check of the booking, not of the physics: the physics is the test below.
+TEST(HoleEdge, SpringCaughtWithinTheCatchDepthIsBookedAtItsPotential) {
+  const model::Model model = test::model_from_yaml(hole5_scene(), "hole5.yaml");
   solver::Solver solver(model);
   solver.delete_elements({14});
   const double ke0 = solver.balance().kinetic;
@@ -103,10 +108,28 @@ TEST(HoleEdge, SpringCaughtWithinTheCatchDepthIsBookedAtItsPotential) {
   }
   std::cout << "hole edge 5 um: initial KE " << ke0 << " J, largest spring potential " << potential_max
             << " J, contact energy - potential min " << worst << " J, energy ratio max " << ratio_max << "\n";
-  // Allowed shortfall: 1e-3 of the largest potential (round-off and the second-order trapezoid
-  // error of the springs that continue; a spring booked only by its work would be short by its
-  // whole initial potential).
+  ASSERT_GT(potential_max, 0);  // the punch did hit the top face
   EXPECT_GT(worst, -1e-3 * potential_max);
+}
+
+// Known defect, disabled: the run creates energy. Reference: conservation of energy (elastic
+// bodies, ELFORM 2, frictionless, undamped), within 1 % as for the drop 0.1 mm inside the edge
+// above. Measured: energy ratio up to 4.70 (the springs caught 5 um deep at the hole's side face
+// push punch and base apart with energy nobody put in). Needs a catch rule that does not accept a
+// new spring deeper than the node's own approach in the step.
+TEST(HoleEdge, DISABLED_DropCaughtWithinTheCatchDepthConservesEnergy) {
+  const model::Model model = test::model_from_yaml(hole5_scene(), "hole5.yaml");
+  solver::Solver solver(model);
+  solver.delete_elements({14});
+  double ratio_max = 1, ratio_min = 1;
+  while (solver.state().time < 20e-6) {
+    solver.step();
+    ratio_max = std::max(ratio_max, solver.energy_ratio());
+    ratio_min = std::min(ratio_min, solver.energy_ratio());
+  }
+  std::cout << "hole edge 5 um: energy ratio " << ratio_min << " .. " << ratio_max << "\n";
+  EXPECT_LT(ratio_max, 1.01);
+  EXPECT_GT(ratio_min, 0.99);
 }
 
 }  // namespace

@@ -59,8 +59,13 @@
 //    quasi-static: a P wave crosses L in 4 us, t_c = 30 us (~ 4 round trips); the energy Hertz
 //    impact radiates into a half-space (Hunter 1957, 1.04 (v0 / c_0)^(3/5)) is 2.5 %, and here it
 //    is reflected back, not lost.
-// Together at most ~ 6 %: asserted |error| < 6 % for d_max, F_max and t_c on the finest mesh, the
-// largest of the three errors decreasing from mesh to mesh, and the energy ratio within 1 % of 1.
+// Together at most ~ 6 %, and the two largest terms (penalty layer, finite block) are compliances
+// with known signs: d_max too large, F_max too small. Asserted on every mesh: 0 < d_max error and
+// F_max error < 0; on the finest mesh d_max error < 6 % and F_max error > -6 % (measured +0.9 % and
+// -2.6 %; +6.5 / -4.6 % at a/h = 3). The same compliances lengthen t_c, but its measured error
+// changes sign (+3.1, +1.1, -0.1 %): another effect of about 1 % (the contact duration counted
+// from the first to the last cycle with a force) is not in the budget, so t_c keeps the two-sided
+// 6 %. The largest of the three errors decreases from mesh to mesh; the energy ratio is within 1 %.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -228,9 +233,11 @@ TEST(HertzImpact, RigidSphereOnElasticBlockConvergesToHertz) {
               << std::showpos << 100 * et << std::noshowpos << " %), max |ratio - 1| " << r.energy_ratio_err
               << "\n";
     EXPECT_LT(r.energy_ratio_err, 0.01);
+    EXPECT_GT(ed, 0.0) << "the added compliances can only deepen the indentation";
+    EXPECT_LT(ef, 0.0) << "the added compliances can only lower the peak force";
     if (per_a == 12) {
-      EXPECT_LT(std::abs(ed), 0.06);
-      EXPECT_LT(std::abs(ef), 0.06);
+      EXPECT_LT(ed, 0.06);
+      EXPECT_GT(ef, -0.06);
       EXPECT_LT(std::abs(et), 0.06);
     }
   }

@@ -5,8 +5,8 @@
 //   modulus; the force on the wall is rho c v0 A while the rod is in contact; the front reflects at
 //   the free end and the rod leaves the wall at t0 + 2L/c with velocity -v0.
 // Discrete corrections (tolerances): the wall stops the leading node (mass rho A h / 2) in one step,
-// which takes its kinetic energy, h / (2L) = 0.5 % of the total: rebound speed within 1 % of v0 and
-// the wall energy about 0.5 % of the initial kinetic energy. The contact duration is resolved to a few
+// which takes its kinetic energy, h / (2L) = 0.5 % of the total: the wall energy is about 0.5 % of
+// the initial kinetic energy; the rebound speed converges to v0 as h goes to zero (second test). The contact duration is resolved to a few
 // steps out of ~110 plus the front's spread over 2-3 elements (2-3 % of L): 3 %. The plateau (mean
 // force over the middle half of the contact) is within 2 % (ringing of the undamped front averages
 // out). Energy: KE + IE + wall energy stays at the initial KE to 0.5 %.
@@ -23,18 +23,36 @@ namespace {
 constexpr double kH = 1e-3, kL = 0.1, kV0 = 10.0, kGap = 1e-4;
 constexpr double kRho = 7850, kE = 210e9, kNu = 0.3;
 
-TEST(RodOnRigidWall, ImpactTimeDurationPlateauReboundEnergy) {
-  const std::string yaml = std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
+std::string rod_scene(int elements) {
+  return std::string("units: SI\ncontrol: {termination_time: 1.0}\n") +
                            "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
                            "sections:\n  s: {ELFORM: 2, Q1: 0, Q2: 0}\n"
                            "parts:\n  rod: {material: steel, section: s}\n"
-                           "mesh:\n  boxes:\n    - {part: rod, origin: [0, 0, 0.0001], size: [0.001, 0.001, 0.1], "
-                           "elements: [1, 1, 100]}\n"
+                           "mesh:\n  boxes:\n    - {part: rod, origin: [0, 0, 0.0001], size: [" +
+                           std::to_string(kL / elements) + ", " + std::to_string(kL / elements) + ", 0.1], elements: [1, 1, " +
+                           std::to_string(elements) + "]}\n"
                            "node_sets:\n  all_nodes: all\n"
                            "boundary_conditions:\n  - {node_set: all_nodes, fix: [x, y]}\n"
                            "initial_velocity:\n  - {part: rod, velocity: [0, 0, -10]}\n"
                            "rigid_walls:\n  - {name: floor, point: [0, 0, 0], normal: [0, 0, 1]}\n";
-  const model::Model model = test::model_from_yaml(yaml, "rod_wall.yaml");
+}
+
+// Mean velocity of the rod after it has left the wall.
+double rebound(int elements) {
+  const model::Model model = test::model_from_yaml(rod_scene(elements), "rod_wall.yaml");
+  solver::Solver solver(model);
+  const double M = kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu));
+  test::run_until(solver, kGap / kV0 + 2 * kL / std::sqrt(M / kRho) + 10e-6);
+  double p = 0, m = 0;
+  for (std::size_t i = 0; i < model.num_nodes(); ++i) {
+    p += model.mass[i] * solver.state().v[3 * i + 2];
+    m += model.mass[i];
+  }
+  return p / m;
+}
+
+TEST(RodOnRigidWall, ImpactTimeDurationPlateauReboundEnergy) {
+  const model::Model model = test::model_from_yaml(rod_scene(100), "rod_wall.yaml");
   ASSERT_EQ(model.rigid_walls.size(), 1u);
   solver::Solver solver(model);
   const double M = kE * (1 - kNu) / ((1 + kNu) * (1 - 2 * kNu));
@@ -77,9 +95,29 @@ TEST(RodOnRigidWall, ImpactTimeDurationPlateauReboundEnergy) {
   EXPECT_NEAR(t_first, t0, 2 * solver.state().dt_prev_half);
   EXPECT_NEAR(t_last - t_first, duration, 0.03 * duration);
   EXPECT_NEAR(f_mean, plateau, 0.02 * plateau);
-  EXPECT_NEAR(v_rebound, kV0, 0.01 * kV0);
+  EXPECT_LT(v_rebound, kV0);  // its convergence to v0 is the next test
+  EXPECT_GT(v_rebound, 0.98 * kV0);
   EXPECT_LT(max_energy_error, 5e-3);
   EXPECT_NEAR(solver.balance().rigid_wall / ke0, kH / (2 * kL), 0.5 * kH / (2 * kL));
+}
+
+// The rebound speed falls short of v0 by the energy the discrete rod leaves behind: the leading
+// node's kinetic energy taken by the wall (h / 2L, first order in h) and the ringing behind the
+// front, which a dispersive lattice spreads over a width growing as h^(2/3) L^(1/3) (order 2/3).
+// So halving h divides the shortfall by 2^(2/3) = 1.59 to 2 (asserted 1.5 .. 2.1; measured 1.69
+// and 1.71), and the limit of the three speeds (Aitken's extrapolation, which takes the order from
+// the data) must be v0: within 0.1 % (measured 0.03 %).
+TEST(RodOnRigidWall, ReboundSpeedConvergesToV0) {
+  const double v50 = rebound(50), v100 = rebound(100), v200 = rebound(200);
+  const double d1 = v100 - v50, d2 = v200 - v100;
+  const double limit = v200 + d2 * d2 / (d1 - d2);
+  std::cout << "rod rebound: " << v50 << ", " << v100 << ", " << v200 << " m/s at 50, 100, 200 elements; ratios "
+            << (kV0 - v50) / (kV0 - v100) << ", " << (kV0 - v100) / (kV0 - v200) << "; limit " << limit << " m/s\n";
+  for (double r : {(kV0 - v50) / (kV0 - v100), (kV0 - v100) / (kV0 - v200)}) {
+    EXPECT_GT(r, 1.5);
+    EXPECT_LT(r, 2.1);
+  }
+  EXPECT_NEAR(limit, kV0, 1e-3 * kV0);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Command line: a refused scene writes nothing and names file:line:column; check prints the model
 // summary (subsystems on/off, stable step and its controlling element); run writes the result set.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -13,8 +14,18 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A directory of its own per test and process: ctest runs the tests of this file side by side
+// (-j), and they write scenes and results under the same names.
+fs::path test_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const fs::path dir = fs::temp_directory_path() /
+                       ("plyimpact_cli_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return dir;
+}
+
 fs::path write_scene(const std::string& name, const std::string& text) {
-  const fs::path p = fs::temp_directory_path() / name;
+  const fs::path p = test_dir() / name;
   std::ofstream(p) << text;
   return p;
 }
@@ -37,13 +48,14 @@ int run(const std::vector<std::string>& args, std::string& out, std::string& err
 TEST(Cli, RefusedSceneWritesNothing) {
   const fs::path scene = write_scene("plyimpact_cli_bad.yaml",
                                      std::string(kGood).replace(std::string(kGood).find("RO: 7800"), 8, "RO: -7800"));
-  const fs::path out_dir = fs::temp_directory_path() / "plyimpact_cli_bad_out";
+  const fs::path out_dir = test_dir() / "out";
   fs::remove_all(out_dir);
   std::string out, err;
   EXPECT_EQ(1, run({"run", scene.string(), "-o", out_dir.string()}, out, err));
   EXPECT_NE(err.find("plyimpact_cli_bad.yaml:5:"), std::string::npos) << err;
   EXPECT_NE(err.find("materials.m.RO"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(out_dir)) << "a refused scene must not create its output directory";
+  fs::remove_all(test_dir());
 }
 
 TEST(Cli, CheckReportsModelSubsystemsAndStep) {
@@ -56,11 +68,12 @@ TEST(Cli, CheckReportsModelSubsystemsAndStep) {
   EXPECT_NE(out.find("stable time step"), std::string::npos) << out;
   EXPECT_NE(out.find("controlling element"), std::string::npos) << out;
   EXPECT_NE(out.find("memory estimate"), std::string::npos) << out;
+  fs::remove_all(test_dir());
 }
 
 TEST(Cli, RunWritesSeriesHistoryAndSummary) {
   const fs::path scene = write_scene("plyimpact_cli_good.yaml", kGood);
-  const fs::path out_dir = fs::temp_directory_path() / "plyimpact_cli_run";
+  const fs::path out_dir = test_dir() / "out";
   fs::remove_all(out_dir);
   std::string out, err;
   ASSERT_EQ(0, run({"run", scene.string(), "-o", out_dir.string()}, out, err)) << err << out;
@@ -72,7 +85,7 @@ TEST(Cli, RunWritesSeriesHistoryAndSummary) {
   json << in.rdbuf();
   EXPECT_NE(json.str().find("\"status\": \"completed\""), std::string::npos) << json.str();
   EXPECT_NE(json.str().find("\"ns_per_element_cycle\""), std::string::npos);
-  fs::remove_all(out_dir);
+  fs::remove_all(test_dir());
 }
 
 TEST(Cli, UsageHelpAndVersion) {

@@ -1,5 +1,6 @@
 // Objectivity: a stressed element rotated rigidly by 90 degrees about z must carry its stress along
-// (sigma_xx = s becomes sigma_yy = s). The element kernels are driven directly with an exact rigid
+// (sigma_xx = s becomes sigma_yy = s); for *MAT_002 the stress of the stretch is computed by hand
+// (total-Lagrangian, below) before and after the rotation. The element kernels are driven directly with an exact rigid
 // rotation per step, x^{n+1} = R(theta) x^n. With the mid-step velocity gradient, L is exactly skew
 // and the Hughes-Winget rotation equals R(theta), so the result is exact up to round-off. Round-off
 // enters as strain noise of ~eps_mach per step (coordinates are rounded), i.e. stress noise of
@@ -7,6 +8,7 @@
 // end-of-step rate would leave an error of order E theta (~1e5 Pa).
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <limits>
 
@@ -44,15 +46,29 @@ TEST_P(Objectivity, StressRotatesWithRigidBody) {
   st.volume.assign(1, 1.0);
   std::vector<double> x = model.X, v(x.size()), f(x.size());
 
-  double expected_yy = 0;
+  double expected_yy = 0, expected_xx = 0, expected_zz = 0;
   const double dt = 1e-6;
   if (c.ortho) {
-    // Total Lagrangian: stretch along x first (strain 1e-3), which gives sigma_xx = C11 eps + ...
-    for (std::size_t n = 0; n < x.size() / 3; ++n) x[3 * n] *= 1.001;
+    // Total Lagrangian: stretch along x first, F = diag(l, 1, 1), l = 1.001. By hand: Green strain
+    // E = (l^2 - 1) / 2, S = C E (first column of the card's stiffness, inverted here from its
+    // compliance; PRBA is the minor ratio nu_ba, so S12 = -PRBA / EB), sigma = F S F^T / J:
+    // sigma_xx = l C11 E, sigma_yy = C21 E / l, sigma_zz = C31 E / l.
+    const double l = 1.001, green = 0.5 * (l * l - 1);
+    Eigen::Matrix3d compliance;
+    compliance << 1 / 157e9, -0.019 / 8.5e9, -0.019 / 8.5e9, -0.019 / 8.5e9, 1 / 8.5e9, -0.53 / 8.5e9, -0.019 / 8.5e9,
+        -0.53 / 8.5e9, 1 / 8.5e9;
+    const Eigen::Matrix3d C = compliance.inverse();  // normal block (shear decouples)
+    for (std::size_t n = 0; n < x.size() / 3; ++n) x[3 * n] *= l;
     for (std::size_t n = 0; n < x.size(); ++n) v[n] = (x[n] - model.X[n]) / dt;
     solver::ChunkResult r;
     solver::update_elements(model, blk, st, 0, 1, x.data(), v.data(), f.data(), dt, r);
-    expected_yy = st.stress[0];
+    expected_yy = l * C(0, 0) * green;  // the old sigma_xx, carried to yy by the rotation
+    expected_xx = C(1, 0) * green / l;
+    expected_zz = C(2, 0) * green / l;
+    for (int g = 0; g < blk.points(); ++g) {
+      EXPECT_NEAR(st.stress[6 * g], expected_yy, 1e-12 * expected_yy) << "stretched, before the rotation";
+      EXPECT_NEAR(st.stress[6 * g + 1], expected_xx, 1e-12 * expected_yy) << "stretched, before the rotation";
+    }
   } else {
     for (int g = 0; g < blk.points(); ++g) st.stress[6 * g] = 1e6;
     expected_yy = 1e6;
@@ -80,8 +96,11 @@ TEST_P(Objectivity, StressRotatesWithRigidBody) {
   for (int g = 0; g < blk.points(); ++g) {
     const double* sg = &st.stress[6 * g];
     if (c.ortho) {
-      // The x-stretched block now stretches along y: sigma_yy takes the old sigma_xx.
+      // The x-stretched block now stretches along y: sigma_yy takes the old sigma_xx, sigma_xx the
+      // old sigma_yy.
       EXPECT_NEAR(sg[1], expected_yy, tol);
+      EXPECT_NEAR(sg[0], expected_xx, tol);
+      EXPECT_NEAR(sg[2], expected_zz, tol);
     } else {
       EXPECT_NEAR(sg[1], expected_yy, tol);
       EXPECT_NEAR(sg[0], 0.0, tol);

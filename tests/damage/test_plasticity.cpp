@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "material/plasticity.hpp"
 
@@ -110,16 +111,37 @@ TEST(Mat003, CowperSymondsScalesTheYieldStress) {
   EXPECT_GT(expected, 2.0 * SIGY);  // the effect is large at 100/s: the test discriminates
 }
 
+// Uniaxial stress along the curve, by hand from the total strain eps: on the segment k of the curve
+// (e_k, s_k) .. (e_k+1, s_k+1), slope H, the stress is s = s_k + H (ep - e_k) with the plastic
+// strain ep = eps - s / E, so s = (s_k + H (eps - e_k)) / (1 + H / E) (valid while ep stays on the
+// segment). Tolerance: the lateral-stress solve (1e-6 relative), and in the one increment that
+// straddles the yield point or a kink of the curve, one elastic increment E * 1e-5.
+// Returns the stress and the branch (0 elastic, k + 1 on segment k).
+std::pair<double, int> mat024_uniaxial(double eps, const std::vector<double>& e, const std::vector<double>& s) {
+  if (eps * E <= s[0]) return {E * eps, 0};
+  for (std::size_t k = 0; k + 1 < e.size(); ++k) {
+    const double H = (s[k + 1] - s[k]) / (e[k + 1] - e[k]);
+    const double sigma = (s[k] + H * (eps - e[k])) / (1 + H / E);
+    if (eps - sigma / E <= e[k + 1]) return {sigma, int(k) + 1};
+  }
+  return {0, -1};  // beyond the curve: not reached here (FAIL = 0.15 < 0.2)
+}
+
 TEST(Mat024, StressFollowsTheHardeningCurve) {
   const std::vector<double> eps = {0.0, 0.05, 0.2}, sig = {300e6, 400e6, 450e6};
   const PlasticityParams p = material::piecewise_linear(E, PR, 0, 0, 0, 0, 0.15, eps, sig);
   Point pt;
   bool failed = false;
+  double total = 0;
+  int branch = 0;
   for (int n = 0; n < 20000 && !failed; ++n) {
     const auto r = uniaxial_step(p, pt, 1.0, 1e-5);
-    if (r.plastic_increment > 0) {
-      ASSERT_NEAR(pt.stress[0], material::yield_stress(p, pt.history[0]), 1e-6 * pt.stress[0]);
-    }
+    total += 1e-5;
+    const auto [want, now] = mat024_uniaxial(total, eps, sig);
+    const double straddle = now != branch ? E * 1e-5 : 0.0;  // the increment crossing a kink
+    branch = now;
+    ASSERT_NEAR(pt.stress[0], want, 1e-6 * want + straddle) << "eps = " << total;
+    if (r.plastic_increment > 0) ASSERT_NEAR(pt.history[0], total - want / E, 1e-6 * total + 1e-5) << "eps = " << total;
     failed = r.failed;
   }
   EXPECT_TRUE(failed);                                // FAIL = 0.15 reached
