@@ -12,12 +12,16 @@
 //    segment whose square contains (x, y), at the natural coordinates xi = 2 (x - x_c) / h,
 //    eta = 2 (y - y_c) / h (x_c, y_c: the square's centre), at gap 0; a node over the overhang
 //    (x > L or y > L, by 0.2 h at least, far beyond the MAXPAR tolerance of 0.025 h) finds none.
-//  - nodes a plate thickness away from the interface find nothing within the tie distance.
+//  - nodes a plate thickness away from the interface find nothing within the tie distance;
+//  - deleting the corner element of the upper plate (rebuild) removes its four exterior faces and
+//    its two nodes no other element holds, exposes the two faces of its neighbours, and maps every
+//    other segment and node to one with the same side and nodes (their identity).
 // Tolerances: coordinates are sums of a few multiples of h, exact to ~1e-19 m; 1e-12 h on points
 // and gaps and 1e-12 on natural coordinates and weights leave room for the Newton projection's
 // round-off (its last step is below 1e-12 in natural coordinates).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -150,6 +154,45 @@ TEST(SegmentSearch, ShiftedInterfaceNodesProjectAtTheirBilinearCoordinates) {
   // column and row of the shifted grid).
   EXPECT_EQ(over + overhang, std::size_t((kN + 1) * (kN + 1)));
   EXPECT_EQ(overhang, std::size_t(2 * (kN + 1) - 1));
+}
+
+TEST(SegmentSet, RebuildKeepsTheIdentityOfWhatSurvives) {
+  const model::Model model = stacked_plates(0, 0);
+  contact::SegmentSetSpec spec;
+  spec.blocks[0] = {model.parts[0].block};
+  spec.blocks[1] = {model.parts[1].block};
+  contact::SegmentSet set(model, spec, model.X);
+  const contact::SegmentSet before = set;
+  const std::size_t upper = std::size_t(model.parts[1].block);
+  contact::AliveMask alive(model.blocks.size());
+  alive[upper].assign(model.blocks[upper].size(), 1);
+  alive[upper][0] = 0;  // the corner element (x, y fastest)
+  const contact::SegmentSetRemap r = set.rebuild(alive, model.X);
+  ASSERT_EQ(set.num_segments(), before.num_segments() - 4 + 2);
+  std::size_t gone = 0, added = 0;
+  for (std::size_t s = 0; s < before.num_segments(); ++s) {
+    if (r.segment[s] < 0) {
+      ++gone;
+      const Index* o = before.segment_owner(s);
+      EXPECT_TRUE(std::equal(o, o + 8, &model.blocks[upper].conn[0])) << "segment " << s << " lost";
+      continue;
+    }
+    EXPECT_EQ(set.segment_key(r.segment[s]), before.segment_key(long(s)));
+  }
+  for (char c : r.new_segment) added += c != 0;
+  EXPECT_EQ(gone, 4u);
+  EXPECT_EQ(added, 2u);
+  std::size_t nodes_gone = 0;
+  for (std::size_t i = 0; i < before.num_nodes(); ++i) {
+    if (r.node[i] < 0) {
+      ++nodes_gone;
+      continue;
+    }
+    EXPECT_EQ(set.node_id(std::size_t(r.node[i])), before.node_id(i));
+    EXPECT_EQ(set.node_side(std::size_t(r.node[i])), before.node_side(i));
+  }
+  EXPECT_EQ(nodes_gone, 2u);
+  for (char c : r.new_node) EXPECT_EQ(c, 0);
 }
 
 }  // namespace
