@@ -63,4 +63,12 @@ std::span<const Index> BucketGrid::candidates(const double* p) const {
   return {items_.data() + offsets_[k], std::size_t(offsets_[k + 1] - offsets_[k])};
 }
 
+void BucketGrid::visit_state(StateVisitor& v) {
+  v.scalar("origin", lo_);
+  v.scalar("cell", cell_);
+  v.scalar("dims", dims_);
+  v.array("offsets", offsets_);
+  v.array("items", items_);
+}
+
 }  // namespace plyimpact::contact

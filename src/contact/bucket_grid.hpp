@@ -10,6 +10,7 @@
 #include <span>
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "core/types.hpp"
 
 namespace plyimpact::contact {
@@ -25,6 +26,9 @@ class BucketGrid {
 
   double cell() const { return cell_; }
   std::size_t num_buckets() const { return offsets_.empty() ? 0 : offsets_.size() - 1; }
+
+  // The grid as built (a restart reads it back instead of rebuilding it from boxes it no longer has).
+  void visit_state(StateVisitor& visitor);
 
  private:
   long bucket_of(double x, int d) const;

@@ -1,20 +1,15 @@
 // Penalty contact, node to segment (theory.md section 8): automatic (two-way) surface-to-surface
 // contact between two sets of parts, or single-surface contact of one set with itself; both with
 // the ERODING_ option (the surface is rebuilt from the exposed faces when elements are deleted).
-//   detection : bucket sort of the segments (contact/bucket_grid), re-sorted every BSORT cycles or
-//               when a contact node has moved a quarter of the search allowance; closest-point
-//               projection (contact/geometry) with MAXPAR; a node penetrates when its gap
-//               g = n . (x_s - x_c) - g_0 lies in (-depth, 0) (g_0: initial-penetration offset).
-//               Allowance and bucket edge follow the median segment size and each segment's box
-//               is expanded by its own margin (graded meshes: a fine zone is not one bucket).
-//               Incremental: at each sort every node keeps the segments it can reach before the
-//               next one and searches only those; only reachable segments are refreshed.
-//   stiffness : SOFT 0  k = min(k_node, k_seg), k_seg = SLSFAC SF K A^2 / V (PENOPT 1)
-//               SOFT 1  k = max(SOFT 0 value, SOFSCL 0.5 m* / dt_c^2), m* = min(node, segment mass)
-//               SOFT 2  k = 0.5 SLSFAC SF (m1 m2 / (m1 + m2)) / dt_c^2, m = segment masses
+// Orchestration over the contact toolkit:
+//   segments  : contact/segment_set (assembly, identity across an eroding rebuild)
+//   search    : contact/segment_search (buckets, candidate lists, records, projection) and
+//               contact/catch_rules (which segment a node penetrates, with the spring history of
+//               contact/spring_history)
+//   law       : contact/penalty_law (SOFT 0/1/2 stiffness, normal force with VDC, friction)
+// and, here, what ties them together:
 //   force     : f_s = (k |g| + viscous) n + f_t on the node, -N_k f_s on the segment nodes, so
-//               linear momentum is conserved to round-off. Friction: elastic-slip return map with
-//               mu = FD + (FS - FD) exp(-DC |v_rel|); VDC: normal viscous damping, % of critical.
+//               linear momentum is conserved to round-off.
 //   energy    : contact energy = - work of the contact forces (trapezoid in time; a spring that
 //               engages, switches segment or changes stiffness in the step is booked at its
 //               potential 0.5 k g^2: a jump up is energy the discrete model created and shows in
@@ -28,17 +23,18 @@
 // does not depend on the thread count.
 #pragma once
 
-#include <array>
-#include <cstdint>
-#include <cstring>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include "contact/bucket_grid.hpp"
-#include "core/aligned_allocator.hpp"
 #include "contact/geometry.hpp"
+#include "contact/penalty_law.hpp"
+#include "contact/segment_search.hpp"
+#include "contact/segment_set.hpp"
+#include "contact/spring_history.hpp"
+#include "contact/stiffness_bounds.hpp"
 #include "contact/surface.hpp"
+#include "core/state_visitor.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact::contact {
@@ -82,141 +78,48 @@ class PenaltyContact {
   double friction_energy() const { return friction_energy_; }  // J, dissipated by friction
   const ContactForces& forces() const { return forces_; }
   // Nodes that can carry a contact force and their last forces (num, 3) — for rigid-body output.
-  const std::vector<Index>& force_nodes() const { return union_nodes_; }
+  const std::vector<Index>& force_nodes() const { return set_.force_nodes(); }
   const std::vector<double>& node_forces() const { return fc_; }
-  std::size_t num_segments() const { return seg_side_.size(); }
-  std::size_t num_slave_nodes() const { return sn_node_.size(); }
-  double stiffness_min() const { return k_min_; }   // N/m over possible node-segment pairs
-  double stiffness_max() const { return k_max_; }
+  std::size_t num_segments() const { return set_.num_segments(); }
+  std::size_t num_slave_nodes() const { return set_.num_nodes(); }
+  double stiffness_min() const { return bounds_.k_min; }   // N/m over possible node-segment pairs
+  double stiffness_max() const { return bounds_.k_max; }
   // A priori stable step of the stiffest single node-segment spring that can form, 2 / omega (no
   // TSSFAC): for `check` and the set-up warning.
-  double stable_step() const { return dt_stable_; }
+  double stable_step() const { return bounds_.dt_stable; }
   // Stable step of the springs active in the last pass, 2 / omega with omega^2 the Gershgorin bound
   // of M^-1 K_c (every spring touching a node summed; the solver combines it with the element step).
   // Infinity when no spring is active.
   double spring_stable_step() const { return dt_springs_; }
-  long sorts() const { return sorts_; }
+  long sorts() const { return search_.sorts(); }
   // Nodes found behind a face at the first pass after an eroding rebuild (exposed faces, nodes new
   // to the surface), kept as offsets instead of springs.
   long exposed_offsets() const { return exposures_; }
 
+  // The run state (segment set after rebuilds, search, springs, forces of the last pass, energies):
+  // a contact built from the same model and definition that reads it back continues bit-identically.
+  void visit_state(StateVisitor& visitor);
+
  private:
-  void build(const std::vector<double>& x, const AliveMask* alive);
-  // Bucket sort, refresh of every record and normal, candidate lists. step_depth: the largest
-  // new-contact depth of the present pass (4 dt v_max), which bounds the lists' depth cap.
-  void sort(const double* x, double step_depth);
-  // Segments of the same side sharing a node with each segment (nbr_).
-  void build_neighbours();
-  double stiffness(std::size_t i, std::size_t s) const;
-  // Best penetrated segment of slave node i at x, or -1; fills the projection.
-  // new_contact_depth: deepest penetration accepted for a node that was not in contact at the last
-  // pass (it can only have crossed the surface by its relative motion in one step; a deeper
-  // "penetration" is a node beside an edge projecting onto a side face, not a real one).
-  // Records and the node's normal are refreshed here when first looked at in a pass.
-  // v, dt (optional): velocities and step, for the per-segment bound of what a new contact can
-  // have crossed in the step.
-  long find_segment(std::size_t i, const double* x, Projection& proj, double new_contact_depth,
-                    const double* v = nullptr, double dt = 0);
-  void estimate_stiffness_range();
-  // Gap offset of slave node i on segment s: the initial-penetration offset plus an exposure offset
-  // when s is the segment it was found behind.
-  double offset_of(std::size_t i, long s) const { return sn_offset_[i] + (s == sn_exp_seg_[i] ? sn_exp_offset_[i] : 0.0); }
-  // Identity of segment s across a rebuild: side and sorted nodes; all -1 for s < 0.
-  std::array<Index, 5> segment_key(long s) const;
-  // Search data of segment s at x (seg_geo_): bilinear coefficients, bounding sphere, normal bound,
-  // in-plane bounds, stamped with the present pass (cycle_).
-  void refresh_segment(std::size_t s, const double* x);
-  // Every record and node normal (at a sort and before the initial-penetration check).
-  void refresh_all(const double* x);
-  // Normal of slave node i from its own segments (refreshing them if stale).
-  void node_normal(std::size_t i, const double* x);
-  // Bounding radius (float, rounded up) and refresh stamp, packed in slot 3 of a record.
-  static float segment_radius(const double* g) {
-    float r;
-    std::memcpy(&r, g + 3, sizeof r);
-    return r;
-  }
-  static std::uint32_t segment_stamp(const double* g) {
-    std::uint32_t stamp;
-    std::memcpy(&stamp, reinterpret_cast<const char*>(g + 3) + sizeof(float), sizeof stamp);
-    return stamp;
-  }
-  // After a sort: each slave node's candidate list (segments it can reach before the next sort).
-  // full_depth: lists for any depth (initial-penetration check), else for the new-contact depth.
-  void build_candidates(const double* x, bool full_depth);
+  // After the segment set was (re)assembled at x: search reset and sort, forces and bounds sized.
+  void start(const std::vector<double>& x);
+  // Exposure offsets (spring_history) of node i found on segment s (last: its segment of the last pass).
+  void update_exposure(std::size_t i, long s, long last, const Projection& pr);
 
   const model::Model& model_;
   model::Contact def_;
-  bool single_ = false;
-  double dt_c_ = 0;
-  SurfaceBuilder builder_a_, builder_b_;
-  std::vector<char> node_rigid_;   // (num_nodes) slaved to a rigid body
-  // Segments.
-  std::vector<Index> seg_nodes_;   // (S, 4)
-  std::vector<Index> seg_owner_;   // (S, 8) owning element's nodes (-1 for the impactor surface)
-  std::vector<char> seg_side_;     // 0 = A, 1 = B
-  std::vector<double> seg_k_;      // SOFT 0 stiffness incl. SLSFAC and SFS/SFM (inf: no element)
-  std::vector<double> seg_mass_;   // SOFT 2 segment mass (half the element's)
-  std::vector<double> seg_node_mass_;  // mean nodal mass of its nodes
-  std::vector<double> seg_depth_;  // release depth, m
-  // Hot per-segment record, refreshed every pass, one 128-byte record per segment aligned to 128
-  // bytes (a candidate's tests read it contiguously instead of gathering four nodes; the sphere
-  // test reads only its first cache line): [0..2] centre c, [3] bounding radius, [4..6] a1,
-  // [7] release depth, [8..10] a2, [11] two floats: bound of the unit normal's deviation from the
-  // centre normal and 1 / |a1 x a2|, [12..14] a3 (geometry.hpp coefficient form), [15] two floats:
-  // in-plane bounds of (p - c) . a1 and (p - c) . a2 for an accepted node (refresh_segment).
-  static constexpr std::size_t kGeo = 16;
-  AlignedVector<double, 128> seg_geo_;  // (S, kGeo)
-  std::vector<Index> seg_local_;   // (S, 4) union index of each segment node
-  // Slave nodes.
-  std::vector<Index> sn_node_;
-  std::vector<char> sn_side_;
-  std::vector<double> sn_k_, sn_mass_, sn_seg_mass_;
-  std::vector<double> sn_offset_;  // initial-penetration baseline gap (<= 0)
-  std::vector<double> sn_ft_;      // (N, 3) tangential (friction) force of the last pass
-  std::vector<double> sn_normal_;  // (N, 3) area-weighted outward normal of the node's own surface
-  std::vector<long> sn_segment_;   // segment the node was in contact with at the last pass, -1
-  std::vector<char> sn_engaged_;   // in contact at the last pass (kept across a rebuild, unlike sn_segment_)
-  // The spring of the last pass (kept across a rebuild): gap g (0: none), stiffness k and normal
-  // force (N, 3); its potential 0.5 k g^2 is what a segment switch starts from (apply).
-  std::vector<double> sn_gap_, sn_k_last_, sn_fn_;
-  // Eroding rebuild: sn_new_ / seg_new_ mark nodes and segments the rebuild added; in the pass
-  // after it (exposed_pass_) a node without a spring that is found behind one of them gets its
-  // gap as an offset on that segment (sn_exp_offset_ <= 0 on sn_exp_seg_, kept across rebuilds,
-  // relaxed as the node backs out, cleared when it leaves that segment).
-  std::vector<char> sn_new_, seg_new_;
-  std::vector<double> sn_exp_offset_;
-  std::vector<long> sn_exp_seg_;
-  bool exposed_pass_ = false;
+  PenaltyLaw law_;
+  SegmentSet set_;
+  SegmentSearch search_;
+  SpringHistory springs_;
+  // Forces on the force nodes (U, 3) of this pass (kept for output) and of the last one (the
+  // trapezoid of the contact work).
+  std::vector<double> fc_, fc_prev_;
+  std::vector<double> rows_;  // (U) Gershgorin row sums of the pass's springs, zeroed after use
   long exposures_ = 0;
-  // Incremental search (LS-DYNA-style: between bucket sorts a node only looks at the segments it
-  // can reach): candidates of slave node i are cand_[cand_start_[i] .. cand_start_[i + 1]), built
-  // at each sort from its bucket, in bucket order.
-  std::vector<Index> cand_start_, cand_;
-  std::vector<Index> own_start_, own_segs_;  // (CSR over slave nodes) segments of the node's own side
-  std::vector<Index> nbr_start_, nbr_;  // (CSR over segments) neighbours sharing a node, same side
-  double new_depth_cap_ = 0;       // bound of the new-contact depth until the next sort, m
-  double list_allowance_ = 0;      // motion allowed before the next sort (<= allowance_), m
-  // Pass counter: a record (or node normal) is refreshed when first looked at in a pass, so
-  // segments no node comes near cost nothing (starts at 1: zeroed records are stale).
-  std::uint32_t cycle_ = 1;
-  // Nodes receiving forces (union of both sides), their forces and positions at the last sort.
-  std::vector<Index> union_nodes_;
-  std::vector<Index> local_of_;    // (num_nodes) -> index in union_nodes_, -1
-  std::vector<char> union_side_a_;
-  std::vector<double> fc_, fc_prev_, x_sort_;
-  std::vector<double> union_inv_mass_;  // 1 / m of deformable nodes, 0 for rigid or massless ones
-  std::vector<double> union_row_;       // Gershgorin row sums of the last pass's springs (zeroed after use)
-  std::vector<Index> sn_local_;    // slave node -> union index
-  BucketGrid grid_[2];                  // per side (single surface: [0] only)
-  std::vector<Index> side_segs_[2];     // grid item -> segment
-  std::vector<double> boxes_[2];
-  std::vector<double> seg_margin_; // (S) search margin of each segment's box, m
-  double cell_ = 0, allowance_ = 0, search_cell_ = 0;  // median extent, allowance, bucket edge
-  long cycles_since_sort_ = 0, sorts_ = 0;
   double energy_ = 0, friction_energy_ = 0;
   ContactForces forces_;
-  double k_min_ = 0, k_max_ = 0, dt_stable_ = std::numeric_limits<double>::infinity();
+  StiffnessBounds bounds_;
   double dt_springs_ = std::numeric_limits<double>::infinity();
 };
 

@@ -1,0 +1,282 @@
+#include "contact/segment_set.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "contact/geometry.hpp"
+
+namespace plyimpact::contact {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}
+
+SegmentSetSpec segment_set_spec(const model::Contact& def) {
+  const auto& spec = def.spec;
+  SegmentSetSpec s;
+  s.single = spec.type == config::ContactSpec::Type::SingleSurface;
+  s.blocks[0] = def.a.blocks;
+  s.impactor[0] = def.a.impactor;
+  if (!s.single) {
+    s.blocks[1] = def.b.blocks;
+    s.impactor[1] = def.b.impactor;
+  }
+  s.stiffness_scale[0] = spec.SLSFAC * spec.SFS;
+  s.stiffness_scale[1] = spec.SLSFAC * spec.SFM;
+  s.PENMAX = spec.PENMAX;
+  s.keep_orphans = spec.ENMASS == 1;
+  return s;
+}
+
+SegmentSet::SegmentSet(const model::Model& model, SegmentSetSpec spec, const std::vector<double>& x)
+    : model_(&model), spec_(std::move(spec)) {
+  builder_[0] = SurfaceBuilder(model, spec_.blocks[0]);
+  if (!spec_.single) builder_[1] = SurfaceBuilder(model, spec_.blocks[1]);
+  node_rigid_.assign(model.num_nodes(), 0);
+  for (const auto& body : model.rigid_bodies)
+    for (Index n : body.nodes) node_rigid_[n] = 1;
+  force_of_model_.assign(model.num_nodes(), -1);
+  assemble(x, nullptr, nullptr);
+}
+
+std::array<Index, 5> SegmentSet::segment_key(long s) const {
+  std::array<Index, 5> key{-1, -1, -1, -1, -1};
+  if (s < 0) return key;
+  key[0] = Index(seg_side_[std::size_t(s)]);
+  for (int k = 0; k < 4; ++k) key[std::size_t(k) + 1] = seg_nodes_[4 * std::size_t(s) + std::size_t(k)];
+  std::sort(key.begin() + 1, key.end());
+  return key;
+}
+
+SegmentSetRemap SegmentSet::rebuild(const AliveMask& alive, const std::vector<double>& x) {
+  // The old identities: contact nodes by model node and side, segments by key, force nodes by node.
+  const SegmentSet old = *this;
+  assemble(x, &alive, &old);
+  SegmentSetRemap r;
+  const std::size_t N = num_nodes(), S = num_segments(), n_model = model_->num_nodes();
+  std::vector<Index> node_of(2 * n_model, -1);
+  for (std::size_t i = 0; i < N; ++i) node_of[2 * std::size_t(node_id_[i]) + node_side_[i]] = Index(i);
+  r.node.resize(old.num_nodes());
+  for (std::size_t i = 0; i < old.num_nodes(); ++i)
+    r.node[i] = node_of[2 * std::size_t(old.node_id_[i]) + old.node_side_[i]];
+  std::map<std::array<Index, 5>, long> segment_of;  // the first segment of each key
+  for (std::size_t s = 0; s < S; ++s) segment_of.emplace(segment_key(long(s)), long(s));
+  r.segment.resize(old.num_segments());
+  for (std::size_t s = 0; s < old.num_segments(); ++s) {
+    const auto it = segment_of.find(old.segment_key(long(s)));
+    r.segment[s] = it == segment_of.end() ? -1 : it->second;
+  }
+  r.force_node.resize(old.force_nodes_.size());
+  for (std::size_t u = 0; u < old.force_nodes_.size(); ++u) r.force_node[u] = force_of_model_[old.force_nodes_[u]];
+  // What the rebuild added (nothing when there was no surface before).
+  r.new_node.assign(N, 0);
+  r.new_segment.assign(S, 0);
+  if (old.num_nodes() > 0) {
+    std::vector<char> known(N, 0), kept(S, 0);
+    for (Index i : r.node)
+      if (i >= 0) known[std::size_t(i)] = 1;
+    for (long s : r.segment)
+      if (s >= 0) kept[std::size_t(s)] = 1;
+    for (std::size_t i = 0; i < N; ++i) r.new_node[i] = !known[i];
+    for (std::size_t s = 0; s < S; ++s) r.new_segment[s] = !kept[s];
+  }
+  return r;
+}
+
+void SegmentSet::assemble(const std::vector<double>& x, const AliveMask* alive, const SegmentSet* old) {
+  seg_nodes_.clear();
+  seg_owner_.clear();
+  seg_side_.clear();
+  seg_k_.clear();
+  seg_mass_.clear();
+  seg_node_mass_.clear();
+  seg_depth_.clear();
+  add_side(0, builder_[0], alive, x);
+  if (!spec_.single) add_side(1, builder_[1], alive, x);
+  collect_nodes(old);
+  build_own_segments();
+  build_force_nodes();
+  build_neighbours();
+}
+
+void SegmentSet::add_segment(const Index* q, const Index* owner, int side, double K, double volume,
+                             double elem_mass, const std::vector<double>& x) {
+  double xq[12];
+  for (int k = 0; k < 4; ++k)
+    for (int d = 0; d < 3; ++d) xq[3 * k + d] = x[3 * std::size_t(q[k]) + d];
+  const double area = quad_area(xq);
+  const double sf = spec_.stiffness_scale[side];
+  seg_nodes_.insert(seg_nodes_.end(), q, q + 4);
+  for (int k = 0; k < 8; ++k) seg_owner_.push_back(owner ? owner[k] : -1);
+  seg_side_.push_back(char(side));
+  seg_k_.push_back(K > 0 && volume > 0 ? sf * K * area * area / volume : kInf);  // PENOPT 1
+  seg_mass_.push_back(elem_mass > 0 ? 0.5 * elem_mass : 0.0);
+  double m = 0;
+  for (int k = 0; k < 4; ++k) m += 0.25 * model_->mass[q[k]];
+  seg_node_mass_.push_back(m);
+  const double thickness = volume > 0 ? volume / area : 0.0;
+  seg_depth_.push_back(spec_.PENMAX > 0 ? spec_.PENMAX : 0.4 * std::max(thickness, std::sqrt(area)));
+}
+
+void SegmentSet::add_side(int side, const SurfaceBuilder& builder, const AliveMask* alive,
+                          const std::vector<double>& x) {
+  const model::Model& model = *model_;
+  for (const auto& f : builder.exterior(alive)) {
+    const auto& blk = model.blocks[f.block];
+    const auto& mat = model.materials[blk.material];
+    const Index* conn = &blk.conn[8 * std::size_t(f.element)];
+    Index q[4];
+    for (int k = 0; k < 4; ++k) q[k] = conn[kHexFaces[f.face][k]];
+    const double volume = blk.volume0[f.element];
+    add_segment(q, conn, side, mat.bulk_modulus, volume, mat.density * volume, x);
+  }
+  if (spec_.impactor[side]) {
+    // No element behind the impactor's surface: infinite PENOPT 1 stiffness (the node's decides),
+    // an equal share of the impactor's mass.
+    const std::size_t nq = model.impactor_quads.size() / 4;
+    const double m = model.impactor ? model.impactor->mass / double(std::max<std::size_t>(nq, 1)) : 0.0;
+    for (std::size_t s = 0; s < nq; ++s) add_segment(&model.impactor_quads[4 * s], nullptr, side, 0.0, 0.0, 2 * m, x);
+  }
+}
+
+void SegmentSet::collect_nodes(const SegmentSet* old) {
+  // The segment nodes of each side, by model node then side; node stiffness and segment mass are
+  // the means over the node's segments of that side.
+  const model::Model& model = *model_;
+  const std::size_t S = num_segments(), n_model = model.num_nodes();
+  std::vector<double> k_sum(n_model * 2, 0.0), segm_sum(n_model * 2, 0.0);
+  std::vector<int> k_count(n_model * 2, 0);
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t key = 2 * std::size_t(seg_nodes_[4 * s + k]) + seg_side_[s];
+      k_sum[key] += seg_k_[s];
+      segm_sum[key] += seg_mass_[s];
+      ++k_count[key];
+    }
+  node_id_.clear();
+  node_side_.clear();
+  node_k_.clear();
+  node_mass_.clear();
+  node_seg_mass_.clear();
+  for (std::size_t n = 0; n < n_model; ++n)
+    for (int side = 0; side < 2; ++side) {
+      const std::size_t key = 2 * n + side;
+      if (k_count[key] == 0) continue;
+      node_id_.push_back(Index(n));
+      node_side_.push_back(char(side));
+      node_k_.push_back(k_sum[key] / k_count[key]);
+      node_mass_.push_back(model.mass[n]);
+      node_seg_mass_.push_back(segm_sum[key] / k_count[key]);
+    }
+  if (spec_.keep_orphans && old)
+    for (std::size_t i = 0; i < old->num_nodes(); ++i) {
+      const Index n = old->node_id_[i];
+      if (k_count[2 * std::size_t(n)] == 0 && k_count[2 * std::size_t(n) + 1] == 0 && model.mass[n] > 0) {
+        // Orphan node kept as a contact mass point, on the side it belonged to.
+        node_id_.push_back(n);
+        node_side_.push_back(char(spec_.single ? 0 : old->node_side_[i]));
+        node_k_.push_back(old->node_k_[i]);
+        node_mass_.push_back(model.mass[n]);
+        node_seg_mass_.push_back(model.mass[n]);
+      }
+    }
+}
+
+void SegmentSet::build_own_segments() {
+  // Own-side segments of each contact node (CSR, ascending segment order).
+  const std::size_t N = num_nodes(), S = num_segments();
+  std::vector<Index> node_of(2 * model_->num_nodes(), -1);
+  for (std::size_t i = 0; i < N; ++i) node_of[2 * std::size_t(node_id_[i]) + node_side_[i]] = Index(i);
+  std::vector<Index> seg_node(4 * S);  // contact node of each segment node on the segment's side
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k) seg_node[4 * s + k] = node_of[2 * std::size_t(seg_nodes_[4 * s + k]) + seg_side_[s]];
+  own_start_.assign(N + 1, 0);
+  for (Index i : seg_node)
+    if (i >= 0) ++own_start_[std::size_t(i) + 1];
+  for (std::size_t i = 0; i < N; ++i) own_start_[i + 1] += own_start_[i];
+  own_segs_.resize(std::size_t(own_start_[N]));
+  std::vector<Index> fill(own_start_.begin(), own_start_.end() - 1);
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k)
+      if (const Index i = seg_node[4 * s + k]; i >= 0) own_segs_[std::size_t(fill[std::size_t(i)]++)] = Index(s);
+}
+
+void SegmentSet::build_force_nodes() {
+  // Union of the contact nodes and the segment nodes, in that order of first appearance.
+  for (Index n : force_nodes_) force_of_model_[n] = -1;
+  force_nodes_.clear();
+  force_side_a_.clear();
+  auto add = [&](Index n, bool side_a) {
+    if (force_of_model_[n] < 0) {
+      force_of_model_[n] = Index(force_nodes_.size());
+      force_nodes_.push_back(n);
+      force_side_a_.push_back(0);
+    }
+    if (side_a) force_side_a_[force_of_model_[n]] = 1;
+  };
+  const std::size_t N = num_nodes(), S = num_segments();
+  for (std::size_t i = 0; i < N; ++i) add(node_id_[i], node_side_[i] == 0 && !spec_.single);
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k) add(seg_nodes_[4 * s + k], seg_side_[s] == 0 && !spec_.single);
+  node_force_.resize(N);
+  for (std::size_t i = 0; i < N; ++i) node_force_[i] = force_of_model_[node_id_[i]];
+  seg_force_.resize(4 * S);
+  for (std::size_t k = 0; k < 4 * S; ++k) seg_force_[k] = force_of_model_[seg_nodes_[k]];
+  const std::size_t U = force_nodes_.size();
+  force_inv_mass_.resize(U);
+  for (std::size_t u = 0; u < U; ++u) {
+    const Index n = force_nodes_[u];
+    force_inv_mass_[u] = !node_rigid_[n] && model_->mass[n] > 0 ? 1 / model_->mass[n] : 0.0;
+  }
+}
+
+void SegmentSet::build_neighbours() {
+  // Segments of the same side sharing a node with s (CSR, ascending, s itself left out).
+  const std::size_t S = num_segments();
+  std::vector<std::vector<Index>> of_node(model_->num_nodes());
+  for (std::size_t s = 0; s < S; ++s)
+    for (int k = 0; k < 4; ++k) of_node[std::size_t(seg_nodes_[4 * s + std::size_t(k)])].push_back(Index(s));
+  nbr_start_.assign(S + 1, 0);
+  nbr_.clear();
+  std::vector<Index> near;
+  for (std::size_t s = 0; s < S; ++s) {
+    near.clear();
+    for (int k = 0; k < 4; ++k)
+      for (Index t : of_node[std::size_t(seg_nodes_[4 * s + std::size_t(k)])])
+        if (t != Index(s) && seg_side_[std::size_t(t)] == seg_side_[s]) near.push_back(t);
+    std::sort(near.begin(), near.end());
+    near.erase(std::unique(near.begin(), near.end()), near.end());
+    nbr_.insert(nbr_.end(), near.begin(), near.end());
+    nbr_start_[s + 1] = Index(nbr_.size());
+  }
+}
+
+void SegmentSet::visit_state(StateVisitor& v) {
+  StateGroup group(v, "segment set");
+  v.array("segment nodes", seg_nodes_);
+  v.array("segment owners", seg_owner_);
+  v.array("segment sides", seg_side_);
+  v.array("segment stiffness", seg_k_);
+  v.array("segment mass", seg_mass_);
+  v.array("segment node mass", seg_node_mass_);
+  v.array("release depth", seg_depth_);
+  v.array("neighbour starts", nbr_start_);
+  v.array("neighbours", nbr_);
+  v.array("node ids", node_id_);
+  v.array("node sides", node_side_);
+  v.array("node stiffness", node_k_);
+  v.array("node mass", node_mass_);
+  v.array("node segment mass", node_seg_mass_);
+  v.array("own segment starts", own_start_);
+  v.array("own segments", own_segs_);
+  v.array("force nodes", force_nodes_);
+  v.array("force node of model node", force_of_model_);
+  v.array("force node side A", force_side_a_);
+  v.array("force node inverse mass", force_inv_mass_);
+  v.array("force node of contact node", node_force_);
+  v.array("force nodes of segments", seg_force_);
+}
+
+}  // namespace plyimpact::contact
