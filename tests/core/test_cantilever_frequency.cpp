@@ -220,7 +220,7 @@ TEST(CantileverFrequency, ConvergesAtSecondOrderToBeamTheory) {
 // IHQ 6 (assumed-strain hourglass control, QM 1) with ONE element through the depth and the width,
 // the README's thin-ply case: 4, 8, 16 elements along (aspect 5:1, 2.5:1, 1.25:1), where IHQ 4/5
 // give f/f_ref = 5.3 at 5:1 and ELFORM 2 3.5. The hourglass strains of a rectangular element bend
-// it exactly (solver/assumed_strain_hourglass.hpp, uniaxial modulus, PR = 0 here anyway), so the
+// it exactly (hourglass/assumed_strain.hpp, uniaxial modulus, PR = 0 here anyway), so the
 // element behaves like a linear Timoshenko beam element with exact bending and one-point shear, and
 // two errors remain: (1) the lumped mass sits at the section's corners, so the section's rotary
 // inertia is rho A h^2/4 instead of rho A h^2/12: three times the rotary-inertia term of the
