@@ -3,8 +3,9 @@
 // element pass uses their lane versions (hex8_lanes.hpp, with the one-point gradient and the
 // hourglass shape vectors). Local arrays are component-major, x[i][k] = coordinate i of local
 // node k, so the loops over the 8 nodes vectorise. Node order is LS-DYNA's (= VTK_HEXAHEDRON =
-// gmsh): nodes 0-3 on zeta = -1 counter-clockwise, 4-7 above them. References: Flanagan & Belytschko, IJNME 17 (1981)
-// 679-706 (FB81); LS-DYNA Theory Manual, "Solid Elements" and "Hourglass Control".
+// gmsh): nodes 0-3 on zeta = -1 counter-clockwise, 4-7 above them. References: Flanagan &
+// Belytschko, IJNME 17 (1981) 679-706 (FB81); LS-DYNA Theory Manual, "Solid Elements" and
+// "Hourglass Control".
 #pragma once
 
 namespace plyimpact::element {
