@@ -1,9 +1,11 @@
-// Kernels for the 8-node hexahedron: shape-function gradients (one-point and Flanagan-Belytschko
-// uniform gradient), volume, characteristic length, 2x2x2 Gauss gradients and hourglass shape
-// vectors. Local arrays are component-major, x[i][k] = coordinate i of local node k, so the loops
-// over the 8 nodes vectorise. Node order is LS-DYNA's (= VTK_HEXAHEDRON = gmsh): nodes 0-3 on
-// zeta = -1 counter-clockwise, 4-7 above them. References: Flanagan & Belytschko, IJNME 17 (1981)
-// 679-706 (FB81); LS-DYNA Theory Manual, "Solid Elements" and "Hourglass Control".
+// Kernels for the 8-node hexahedron: centre Jacobian, Flanagan-Belytschko uniform gradient, volume,
+// characteristic length, 2x2x2 Gauss gradients and the hourglass base vectors. The one-point
+// element pass uses their lane versions (hex8_lanes.hpp, with the one-point gradient and the
+// hourglass shape vectors). Local arrays are component-major, x[i][k] = coordinate i of local
+// node k, so the loops over the 8 nodes vectorise. Node order is LS-DYNA's (= VTK_HEXAHEDRON =
+// gmsh): nodes 0-3 on zeta = -1 counter-clockwise, 4-7 above them. References: Flanagan &
+// Belytschko, IJNME 17 (1981) 679-706 (FB81); LS-DYNA Theory Manual, "Solid Elements" and
+// "Hourglass Control".
 #pragma once
 
 namespace plyimpact::element {
@@ -22,14 +24,6 @@ inline constexpr double kGamma[4][8] = {
 };
 
 using NodeVec = double[3][8];  // component-major nodal values of one element
-
-// One-point gradient at the element centre: b[i][k] = dN_k/dx_i at xi=eta=zeta=0 and the
-// one-point volume 8*det(J0). Returns the volume (<= 0 means an inverted or collapsed element;
-// b is then not computed).
-inline double hex8_centroid_gradient(const NodeVec& x, NodeVec& b) noexcept;
-
-// The same from an already computed centre Jacobian J0 (see hex8_centroid_jacobian).
-inline double hex8_gradient_from_centroid_jacobian(const double J[9], NodeVec& b) noexcept;
 
 // Jacobian at the element centre of any nodal field u: J[3a+c] = du_a/dxi_c = sum_k u_a,k xi_c,k / 8.
 // With u = x it is dx/dxi; with u = v it is dv/dxi, and L = dv/dx = J_v J_x^-1.
@@ -63,10 +57,6 @@ inline bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double det
 
 // Velocity Jacobian dv/dxi at Gauss point gp (same point order as hex8_gauss_gradients).
 inline void hex8_gauss_jacobian(const NodeVec& v, int gp, double J[9]) noexcept;
-
-// Hourglass shape vectors gamma[a][k] = Gamma[a][k] - sum_i (Gamma_a . x_i) b[i][k] (FB81 eq. 3.x);
-// orthogonal to every linear field for any gradient b with sum_k x_k (x) b_k = I.
-inline void hex8_hourglass_shape(const NodeVec& x, const NodeVec& b, double gamma[4][8]) noexcept;
 
 // Small dense helpers on row-major 3x3 matrices.
 inline double det3(const double a[9]) noexcept;

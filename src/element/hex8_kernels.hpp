@@ -55,25 +55,6 @@ inline bool mid_step_velocity_gradient(const double Jx[9], const double Jv[9], d
   return true;
 }
 
-inline double hex8_centroid_gradient(const NodeVec& x, NodeVec& b) noexcept {
-  // J0[a][c] = dx_a/dxi_c at the centre = sum_k x_a,k * xi_c,k / 8
-  double J[9];
-  hex8_centroid_jacobian(x, J);
-  return hex8_gradient_from_centroid_jacobian(J, b);
-}
-
-inline double hex8_gradient_from_centroid_jacobian(const double J[9], NodeVec& b) noexcept {
-  double Jinv[9];
-  const double detj = inverse3(J, Jinv);
-  if (!(detj > 0.0)) return detj;
-  // b[i][k] = sum_c Jinv[c][i] * dN_k/dxi_c(0), dN_k/dxi_c(0) = xi_c,k / 8
-  for (int i = 0; i < 3; ++i) {
-    const double j0 = 0.125 * Jinv[0 * 3 + i], j1 = 0.125 * Jinv[1 * 3 + i], j2 = 0.125 * Jinv[2 * 3 + i];
-    for (int k = 0; k < 8; ++k) b[i][k] = j0 * kXi[k] + j1 * kEta[k] + j2 * kZeta[k];
-  }
-  return 8.0 * detj;
-}
-
 namespace detail {
 
 // Volume of a trilinear hexahedron is the trilinear form V = sum_ijk D_ijk x_i y_j z_k with
@@ -264,15 +245,6 @@ inline bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double det
         B[gp][i][k] = Jinv[0 * 3 + i] * dN[0][k] + Jinv[1 * 3 + i] * dN[1][k] + Jinv[2 * 3 + i] * dN[2][k];
   }
   return ok;
-}
-
-inline void hex8_hourglass_shape(const NodeVec& x, const NodeVec& b, double gamma[4][8]) noexcept {
-  for (int a = 0; a < 4; ++a) {
-    double h[3] = {0, 0, 0};
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 8; ++k) h[i] += kGamma[a][k] * x[i][k];
-    for (int k = 0; k < 8; ++k) gamma[a][k] = kGamma[a][k] - (h[0] * b[0][k] + h[1] * b[1][k] + h[2] * b[2][k]);
-  }
 }
 
 }  // namespace plyimpact::element

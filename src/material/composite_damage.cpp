@@ -54,7 +54,6 @@
 #include <cmath>
 #include <limits>
 
-#include "core/error.hpp"
 
 namespace plyimpact::material {
 namespace {
@@ -204,39 +203,6 @@ const char* composite_damage_cause_name(CompositeDamageCause c) {
     case CompositeDamageCause::TransverseShear: return "transverse shear (EPSR)";
   }
   return "unknown";
-}
-
-CompositeDamageParams make_composite_damage_params(const config::MatCompositeDamage& m,
-                                                   const config::SourceLocation& where) {
-  if (const auto bad = config::unsupported_field(m))
-    throw InputError(config::at(where)
-                           << "field not implemented: " << *bad
-                           << "; allowed the card without this field (or its default)");
-  config::MatOrthotropicElastic e;
-  e.RO = m.RO, e.EA = m.EA, e.EB = m.EB, e.EC = m.EC, e.PRBA = m.PRBA, e.PRCA = m.PRCA, e.PRCB = m.PRCB;
-  e.GAB = m.GAB, e.GBC = m.GBC, e.GCA = m.GCA, e.axes = m.axes;
-  CompositeDamageParams p;
-  p.C = orthotropic_stiffness(e, where);
-  p.RO = m.RO;
-  p.wave_modulus = max_wave_modulus(p.C);
-  p.GAB = m.GAB, p.GBC = m.GBC, p.GCA = m.GCA;
-  p.strength = {m.XT, m.XC, m.YT, m.YC, m.SC};
-  if (!(m.XT > 0 && m.XC > 0 && m.YT > 0 && m.YC > 0 && m.SC > 0))
-    throw InputError(config::at(where)
-                           << "strengths must be positive; found XT=" << m.XT << " XC=" << m.XC << " YT=" << m.YT
-                           << " YC=" << m.YC << " SC=" << m.SC << "; allowed XT, XC, YT, YC, SC > 0");
-  p.CRIT = m.CRIT, p.BETA = m.BETA, p.ALPH = m.ALPH;
-  p.FBRT = m.FBRT, p.YCFAC = m.YCFAC, p.SOFT = m.SOFT, p.SOFTG = m.SOFTG;
-  p.SLIMT1 = m.SLIMT1, p.SLIMC1 = m.SLIMC1, p.SLIMT2 = m.SLIMT2, p.SLIMC2 = m.SLIMC2, p.SLIMS = m.SLIMS;
-  p.NCYRED = std::max(1, m.NCYRED);
-  p.DFAILT = m.DFAILT, p.DFAILC = m.DFAILC, p.DFAILM = m.DFAILM, p.DFAILS = m.DFAILS, p.EFS = m.EFS;
-  p.TFAIL = m.TFAIL;
-  p.EPSF = m.EPSF, p.EPSR = m.EPSR, p.TSMD = m.TSMD > 0 ? m.TSMD : 0.9;
-  if (p.EPSF > 0 && !(std::abs(p.EPSR) > p.EPSF))
-    throw InputError(config::at(where)
-                           << "transverse shear damage needs |EPSR| > EPSF; found EPSF=" << p.EPSF
-                           << " EPSR=" << p.EPSR << "; allowed |EPSR| > EPSF");
-  return p;
 }
 
 void composite_damage_init(const CompositeDamageParams& p, double* h) {

@@ -5,7 +5,6 @@
 // Every choice where the manual is ambiguous is listed at the top of composite_damage.cpp.
 #pragma once
 
-#include "config/mat054_spec.hpp"
 #include "material/composite_damage_criteria.hpp"
 #include "material/elastic.hpp"
 
@@ -56,7 +55,8 @@ enum class CompositeDamageCause : int {
 };
 const char* composite_damage_cause_name(CompositeDamageCause c);
 
-// Constants prepared once per material (no strings, trivially copyable).
+// Constants prepared once per material from the card (model/material_builder: composite_damage_params),
+// no strings, trivially copyable.
 struct CompositeDamageParams {
   Stiffness6 C{};             // undamaged stiffness, material axes (orthotropic_stiffness)
   double RO = 0;
@@ -72,11 +72,6 @@ struct CompositeDamageParams {
   double TFAIL = 0;
   double EPSF = 0, EPSR = 0, TSMD = 0.9;  // TSMD blank -> 0.90 (KW text)
 };
-
-// Throws InputError (file:line:col: key: ...) when the constants are not positive definite or the
-// card holds a field unsupported_field() names.
-CompositeDamageParams make_composite_damage_params(const config::MatCompositeDamage& m,
-                                                   const config::SourceLocation& where);
 
 // Undamaged state: flags 1, strengths as entered, zero strain, criteria -1.
 void composite_damage_init(const CompositeDamageParams& p, double* history);

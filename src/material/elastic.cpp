@@ -4,20 +4,20 @@
 #include <cmath>
 #include <vector>
 
-#include "core/error.hpp"
-
 namespace plyimpact::material {
 
-IsotropicConstants isotropic_constants(const config::MatElastic& m) {
+IsotropicConstants isotropic_constants(double E, double PR) {
   IsotropicConstants c;
-  c.mu = m.E / (2.0 * (1.0 + m.PR));
-  c.lambda = m.E * m.PR / ((1.0 + m.PR) * (1.0 - 2.0 * m.PR));
-  c.bulk = m.E / (3.0 * (1.0 - 2.0 * m.PR));
+  c.mu = E / (2.0 * (1.0 + PR));
+  c.lambda = E * PR / ((1.0 + PR) * (1.0 - 2.0 * PR));
+  c.bulk = E / (3.0 * (1.0 - 2.0 * PR));
   return c;
 }
 
-Stiffness6 orthotropic_stiffness(const config::MatOrthotropicElastic& m, const config::SourceLocation& where) {
-  // Compliance in material axes with the LS-DYNA minor ratios: eps_a = s_a/EA - PRBA s_b/EB - PRCA s_c/EC ...
+namespace {
+
+// Compliance in material axes with the LS-DYNA minor ratios: eps_a = s_a/EA - PRBA s_b/EB - PRCA s_c/EC ...
+Eigen::Matrix<double, 6, 6> compliance(const OrthotropicConstants& m) {
   Eigen::Matrix<double, 6, 6> S = Eigen::Matrix<double, 6, 6>::Zero();
   S(0, 0) = 1.0 / m.EA;
   S(1, 1) = 1.0 / m.EB;
@@ -28,19 +28,23 @@ Stiffness6 orthotropic_stiffness(const config::MatOrthotropicElastic& m, const c
   S(3, 3) = 1.0 / m.GAB;
   S(4, 4) = 1.0 / m.GBC;
   S(5, 5) = 1.0 / m.GCA;
-  // Positive definiteness of the normal block <=> Delta > 0 with the usual nu_ij (Lempriere 1968).
+  return S;
+}
+
+}  // namespace
+
+double orthotropic_determinant(const OrthotropicConstants& m) {
   const double nu_ab = m.PRBA * m.EA / m.EB, nu_ac = m.PRCA * m.EA / m.EC, nu_bc = m.PRCB * m.EB / m.EC;
-  const double delta = 1.0 - nu_ab * m.PRBA - nu_bc * m.PRCB - nu_ac * m.PRCA - 2.0 * m.PRBA * m.PRCB * nu_ac;
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(S);
-  if (!(delta > 0.0) || !(eig.eigenvalues().minCoeff() > 0.0)) {
-    throw InputError(config::at(where)
-                           << "orthotropic constants give a stiffness that is not positive definite (1 - nu_ab nu_ba"
-                              " - nu_bc nu_cb - nu_ca nu_ac - 2 nu_ba nu_cb nu_ac = "
-                           << delta << "); found PRBA=" << m.PRBA << " PRCA=" << m.PRCA << " PRCB=" << m.PRCB
-                           << "; allowed: constants with a positive definite compliance. PRBA is LS-DYNA's minor "
-                              "ratio nu_ba = nu_ab*EB/EA (about 0.02 for a carbon ply, not 0.3)");
-  }
-  const Eigen::Matrix<double, 6, 6> C = S.inverse();
+  return 1.0 - nu_ab * m.PRBA - nu_bc * m.PRCB - nu_ac * m.PRCA - 2.0 * m.PRBA * m.PRCB * nu_ac;
+}
+
+bool admissible(const OrthotropicConstants& m) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> eig(compliance(m));
+  return orthotropic_determinant(m) > 0.0 && eig.eigenvalues().minCoeff() > 0.0;
+}
+
+Stiffness6 orthotropic_stiffness(const OrthotropicConstants& m) {
+  const Eigen::Matrix<double, 6, 6> C = compliance(m).inverse();
   Stiffness6 out;
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j) out[6 * i + j] = 0.5 * (C(i, j) + C(j, i));
@@ -176,7 +180,7 @@ Eigen::Vector3d node(const double x[3][8], int k) { return {x[0][k], x[1][k], x[
 
 }  // namespace
 
-Mat3 material_axes(const config::MaterialAxes& axes, double beta, const double x[3][8]) {
+Mat3 material_axes(const MaterialAxes& axes, double beta, const double x[3][8]) {
   Eigen::Vector3d a, b, c;
   if (axes.AOPT == 2) {
     a = unit(Eigen::Vector3d(axes.A[0], axes.A[1], axes.A[2]));

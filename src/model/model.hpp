@@ -37,7 +37,7 @@ struct Material {
   double bulk_modulus = 0;
   material::IsotropicConstants iso;    // MAT_001
   material::Stiffness6 c_material{};   // MAT_002, in material axes
-  config::MaterialAxes axes;           // MAT_002, MAT_054
+  material::MaterialAxes axes;         // MAT_002, MAT_054
   material::PlasticityParams plastic;  // MAT_003, MAT_024
   material::CompositeDamageParams composite;  // MAT_054/055
   // History values per integration point (plastic strain, back stress; damage flags, ...).
@@ -50,10 +50,7 @@ struct Material {
 };
 
 // One material orientation: axes and the stiffness rotated to global (reference) axes.
-struct Orientation {
-  Mat3 axes{};                  // rows a, b, c (global components)
-  material::Stiffness6 c_global{};
-};
+using Orientation = material::Orientation;
 
 enum class HourglassKind { None, Viscous, Stiffness };
 

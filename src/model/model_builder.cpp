@@ -4,73 +4,12 @@
 
 #include "core/error.hpp"
 #include "element/hex8.hpp"
+#include "model/material_builder.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact::model {
 
 namespace {
-
-Material make_material(const config::MaterialSpec& spec) {
-  Material m;
-  m.name = spec.name;
-  m.card = spec.card;
-  if (const auto* iso = std::get_if<config::MatElastic>(&spec.params)) {
-    m.kind = MaterialKind::IsotropicElastic;
-    m.density = iso->RO;
-    m.iso = material::isotropic_constants(*iso);
-    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
-    m.bulk_modulus = iso->E / (3 * (1 - 2 * iso->PR));
-  } else if (const auto* rig = std::get_if<config::MatRigid>(&spec.params)) {
-    m.kind = MaterialKind::Rigid;
-    m.density = rig->RO;
-    m.iso = material::isotropic_constants(config::MatElastic{rig->RO, rig->E, rig->PR});
-    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
-    m.bulk_modulus = rig->E / (3 * (1 - 2 * rig->PR));
-  } else if (const auto* pk = std::get_if<config::MatPlasticKinematic>(&spec.params)) {
-    m.kind = MaterialKind::Plastic;
-    m.density = pk->RO;
-    m.plastic = material::plastic_kinematic(pk->E, pk->PR, pk->SIGY, pk->ETAN, pk->BETA, pk->SRC, pk->SRP, pk->FS);
-    m.iso = material::isotropic_constants(config::MatElastic{pk->RO, pk->E, pk->PR});
-    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;  // elastic moduli for the step (conservative)
-    m.bulk_modulus = pk->E / (3 * (1 - 2 * pk->PR));
-  } else if (const auto* pl = std::get_if<config::MatPiecewiseLinear>(&spec.params)) {
-    m.kind = MaterialKind::Plastic;
-    m.density = pl->RO;
-    m.plastic = material::piecewise_linear(pl->E, pl->PR, pl->SIGY, pl->ETAN, pl->C, pl->P, pl->FAIL, pl->LCSS_strain,
-                                           pl->LCSS_stress);
-    m.iso = material::isotropic_constants(config::MatElastic{pl->RO, pl->E, pl->PR});
-    m.wave_modulus = m.iso.lambda + 2 * m.iso.mu;
-    m.bulk_modulus = pl->E / (3 * (1 - 2 * pl->PR));
-  } else if (const auto* cd = std::get_if<config::MatCompositeDamage>(&spec.params)) {
-    m.kind = MaterialKind::CompositeDamage;
-    m.density = cd->RO;
-    m.composite = material::make_composite_damage_params(*cd, spec.where);
-    m.c_material = m.composite.C;
-    m.wave_modulus = m.composite.wave_modulus;  // undamaged stiffness, as LS-DYNA (theory.md 1.2)
-    const double s_sum = 1 / cd->EA + 1 / cd->EB + 1 / cd->EC - 2 * (cd->PRBA / cd->EB + cd->PRCA / cd->EC + cd->PRCB / cd->EC);
-    m.bulk_modulus = s_sum > 0 ? 1 / s_sum : m.wave_modulus / 3;
-    m.axes = cd->axes;
-    if (m.axes.AOPT != 3 && m.axes.BETA != 0.0)
-      throw InputError(at(spec.where) << "MANGLE acts only with AOPT 3 (as in LS-DYNA); found AOPT " << m.axes.AOPT
-                                      << "; give a ply angle with parts.<name>.beta instead");
-  } else {
-    const auto& ortho = std::get<config::MatOrthotropicElastic>(spec.params);
-    m.kind = MaterialKind::OrthotropicElastic;
-    m.density = ortho.RO;
-    m.c_material = material::orthotropic_stiffness(ortho, spec.where);
-    m.wave_modulus = material::max_wave_modulus(m.c_material);
-    const double s_sum = 1 / ortho.EA + 1 / ortho.EB + 1 / ortho.EC -
-                         2 * (ortho.PRBA / ortho.EB + ortho.PRCA / ortho.EC + ortho.PRCB / ortho.EC);
-    m.bulk_modulus = s_sum > 0 ? 1 / s_sum : m.wave_modulus / 3;
-    m.axes = ortho.axes;
-    if (m.axes.AOPT != 3 && m.axes.BETA != 0.0)
-      throw InputError(at(spec.where) << "BETA on the material card acts only with AOPT 3 (as in LS-DYNA); found "
-                                         "AOPT "
-                                      << m.axes.AOPT << "; give a ply angle with parts.<name>.beta instead");
-  }
-  m.wave_speed = std::sqrt(m.wave_modulus / m.density);
-  return m;
-}
 
 void gather_reference(const std::vector<double>& X, const Index* conn, double x[3][8]) {
   for (int k = 0; k < 8; ++k)

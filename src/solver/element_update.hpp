@@ -1,8 +1,8 @@
 // Element pass: for a range of one block's elements, from the current coordinates x^{n+1} and
 // velocities v^{n+1/2}, update the stresses to t^{n+1}, add the internal, bulk-viscous and
 // hourglass forces to the nodal force array, accumulate element energies and find the element
-// stable time step. One template instance per (formulation, material, hourglass) combination; the
-// dispatch happens once per chunk, never per element.
+// stable time step. The element family of the block (element_families.hpp) does the work; one
+// template instance per (family, material, hourglass) combination, chosen once per chunk.
 #pragma once
 
 #include <limits>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "solver/erosion.hpp"
 #include "solver/state.hpp"
 
 namespace plyimpact::solver {
@@ -29,13 +30,6 @@ struct ChunkResult {
   double eroded_energy = 0;
 };
 
-// Why an element was eroded (history.csv and summary.json count them per part and cause).
-enum class ErosionCause : int {
-  PlasticStrain = 1,  // MAT_003 FS / MAT_024 FAIL
-  TimeStep = 2,       // control.erode_tsmin: the element step fell below the limit
-  CompositeBase = 10, // MAT_054: 10 + material::CompositeDamageCause
-};
-const char* erosion_cause_name(int cause);
 
 // dt: Delta t^{n+1/2} (0 for the initial evaluation, which changes no stress).
 void update_elements(const model::Model& model, const model::ElementBlock& block, BlockState& state, Index begin,

@@ -34,7 +34,7 @@
 // xi = 1.54 the limit is 0.30 L/c (explicit viscous damping lowers the stable step). xi grows with
 // the refinement (0.52, 0.90, 1.54 at a/h = 3, 6, 12: the outer elements keep their size while the
 // top layers thin), so only the finest mesh failed. With Q2 = 0 the run passed that point.
-// Fix: the bulk viscosity uses L (solver/element_update.cpp, bulk_viscosity; identical for
+// Fix: the bulk viscosity uses L (solver/element_step.hpp, bulk_viscosity; identical for
 // cubes), checked by tests/core/test_bulk_viscosity_step.cpp. ELFORM 2 at a/h = 12 still needs
 // 0.7: at 0.8 and 0.9 it now gains energy in the contact zone from ~4 us, stopped at ~12 us (see
 // the README, contact section); ELFORM 1 / IHQ 3 is what this test uses.

@@ -220,7 +220,7 @@ TEST(CantileverFrequency, ConvergesAtSecondOrderToBeamTheory) {
 // IHQ 6 (assumed-strain hourglass control, QM 1) with ONE element through the depth and the width,
 // the README's thin-ply case: 4, 8, 16 elements along (aspect 5:1, 2.5:1, 1.25:1), where IHQ 4/5
 // give f/f_ref = 5.3 at 5:1 and ELFORM 2 3.5. The hourglass strains of a rectangular element bend
-// it exactly (solver/assumed_strain_hourglass.hpp, uniaxial modulus, PR = 0 here anyway), so the
+// it exactly (hourglass/assumed_strain.hpp, uniaxial modulus, PR = 0 here anyway), so the
 // element behaves like a linear Timoshenko beam element with exact bending and one-point shear, and
 // two errors remain: (1) the lumped mass sits at the section's corners, so the section's rotary
 // inertia is rho A h^2/4 instead of rho A h^2/12: three times the rotary-inertia term of the
@@ -230,7 +230,7 @@ TEST(CantileverFrequency, ConvergesAtSecondOrderToBeamTheory) {
 // [1.7, 2.4], as the (l/L)^4 terms are still ~ 1/4 of the leading ones at 5:1) and the 5:1 error
 // is within 2.5 % (measured -1.76 %, i.e. -0.27 (l/L)^2 with l/L = 1/4, plus the -0.08 %).
 // TSSFAC 0.9 (LS-DYNA's default). It ran at 0.6 until the element step held its bulk-viscosity Q
-// (element_update.cpp, step_q): with Q taken afresh every cycle the step oscillated with the
+// (solver/element_step.hpp, step_q): with Q taken afresh every cycle the step oscillated with the
 // vibration and pumped it, and the 4 x 1 x 1 and 8 x 1 x 1 cantilevers gained energy at 0.9 (ratio
 // 1.5 after ~1300-2900 cycles; IHQ 4 with QM 0.1 failed after 487). Now measured at 0.9 over
 // 20000 cycles: the discrete energy within 2e-4 (IHQ 6) and 6e-4 (IHQ 4) of its start

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "material/elastic.hpp"
+#include "model/material_builder.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -23,7 +24,7 @@ config::MatOrthotropicElastic t800() {
 
 TEST(ElasticMaterial, OrthotropicStiffnessInvertsTheCardCompliance) {
   const auto m = t800();
-  const auto C = material::orthotropic_stiffness(m, {});
+  const auto C = model::orthotropic_stiffness(m, {});
   Eigen::Matrix<double, 6, 6> Cm;
   for (int i = 0; i < 36; ++i) Cm(i / 6, i % 6) = C[i];
   // Uniaxial stress along b: eps_a = -PRBA sigma_b / EB (the card's definition of PRBA).
@@ -44,7 +45,7 @@ TEST(ElasticMaterial, NonPositiveDefiniteConstantsAreRefused) {
   m.PRBA = m.PRCA = m.PRCB = 0.6;
   config::SourceLocation where{"plate.yaml", 12, 5, "materials.ply"};
   try {
-    material::orthotropic_stiffness(m, where);
+    model::orthotropic_stiffness(m, where);
     FAIL() << "should have been refused";
   } catch (const InputError& e) {
     const std::string msg = e.what();
@@ -59,9 +60,9 @@ TEST(ElasticMaterial, WaveModulusIsExactForIsotropyAndBoundsOrthotropy) {
   const double E = 200e9, nu = 0.3, G = E / (2 * (1 + nu));
   iso.EA = iso.EB = iso.EC = E, iso.PRBA = iso.PRCA = iso.PRCB = nu, iso.GAB = iso.GBC = iso.GCA = G;
   const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
-  EXPECT_NEAR(material::max_wave_modulus(material::orthotropic_stiffness(iso, {})), M, 1e-9 * M);
+  EXPECT_NEAR(material::max_wave_modulus(model::orthotropic_stiffness(iso, {})), M, 1e-9 * M);
   // Orthotropic: at least the largest axial modulus C11, and no direction sampled at random exceeds it.
-  const auto C = material::orthotropic_stiffness(t800(), {});
+  const auto C = model::orthotropic_stiffness(t800(), {});
   const double bound = material::max_wave_modulus(C);
   EXPECT_GE(bound, C[0] * (1 - 1e-12));
   for (int k = 0; k < 200; ++k) {
@@ -78,8 +79,8 @@ TEST(ElasticMaterial, WaveModulusIsExactForIsotropyAndBoundsOrthotropy) {
 }
 
 TEST(ElasticMaterial, RotationByNinetyDegreesSwapsAxes) {
-  const auto Cm = material::orthotropic_stiffness(t800(), {});
-  config::MaterialAxes axes;
+  const auto Cm = model::orthotropic_stiffness(t800(), {});
+  material::MaterialAxes axes;
   axes.AOPT = 2;
   const double x[3][8] = {};
   const Mat3 q = material::material_axes(axes, M_PI / 2, x);  // a along global y

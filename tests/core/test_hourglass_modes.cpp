@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "element/hex8.hpp"
-#include "solver/assumed_strain_hourglass.hpp"
+#include "hourglass/assumed_strain.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -88,7 +88,7 @@ TEST_P(HourglassMode, RigidMotionIsNotResistedOnSkewedElement) {
 INSTANTIATE_TEST_SUITE_P(IHQ, HourglassMode, ::testing::Values(1, 2, 3, 4, 5, 6),
                          [](const auto& info) { return "IHQ" + std::to_string(info.param); });
 
-// IHQ 6 (assumed strain, solver/assumed_strain_hourglass.hpp): on a free cube of side h the 12
+// IHQ 6 (assumed strain, hourglass/assumed_strain.hpp): on a free cube of side h the 12
 // hourglass modes are uncoupled except the three shear ones (u_x ~ eta zeta, u_y ~ zeta xi,
 // u_z ~ xi eta). A normal mode of amplitude q (nodal displacement q Gamma) has the energy
 // W = QM (V/3) E (q/a)^2 / 2 (a = h/2; V/9 for xi eta zeta), its mass is rho V (8 nodes of rho V/8
@@ -174,7 +174,7 @@ TEST(AssumedStrainModuli, OffAxisPlyMatchesLaminaTransformation) {
       << ", 0]}\nsections:\n  s: {ELFORM: 1, IHQ: 6, QM: 1}\nparts:\n  p: {material: m, section: s}\n"
       << "mesh:\n  boxes:\n    - {part: p, size: [0.01, 0.02, 0.005], elements: [1, 1, 1]}\n";
     const model::Model model = test::model_from_yaml(y.str());
-    const std::vector<double> m = solver::assumed_strain_moduli(model, model.blocks[0]);
+    const std::vector<double> m = hourglass::assumed_strain_moduli(model, model.blocks[0]);
     const double c2 = c * c, s2 = s * s;
     const double Ex = 1 / (c2 * c2 / E1 + s2 * s2 / E2 + (1 / G12 - 2 * nu12 / E1) * s2 * c2);
     const double Ey = 1 / (s2 * s2 / E1 + c2 * c2 / E2 + (1 / G12 - 2 * nu12 / E1) * s2 * c2);

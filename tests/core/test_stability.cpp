@@ -22,7 +22,7 @@ model::Model crushed_cube() {
       "crush.yaml");
   // One corner thrown through the opposite face at 20 km/s: inverts within a few steps. The energy
   // guard is off so that the inversion check itself is exercised. No bulk viscosity: with it the
-  // step holds its large Q1 term (element_update.cpp, step_q) and the viscosity stops the corner
+  // step holds its large Q1 term (solver/element_step.hpp, step_q) and the viscosity stops the corner
   // before it gets through (the run completes), while this test needs an element that inverts.
   model.v0[3 * 7 + 0] = model.v0[3 * 7 + 1] = model.v0[3 * 7 + 2] = -2e4;
   return model;

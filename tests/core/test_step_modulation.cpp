@@ -6,7 +6,7 @@
 // Q = Q2 c (+ Q1 term) only while the element compresses, so a step taken afresh every cycle rises
 // and falls at twice the frequency of the vibration, and a central-difference scheme whose step is
 // modulated in phase with a mode is parametrically pumped. The solver now holds the Q of the step
-// and lets it decay by only 0.1 % per cycle (element_update.cpp, step_q); this checks the result.
+// and lets it decay by only 0.1 % per cycle (solver/element_step.hpp, step_q); this checks the result.
 //
 // Case: one hex of side t with every node fixed in x and y (as test_bulk_viscosity_step.cpp), so
 // its only motion is the thickness mode, omega = 2 c / t with the wave modulus, exactly the step's

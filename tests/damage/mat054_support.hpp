@@ -11,6 +11,7 @@
 
 #include "config/mat054_spec.hpp"
 #include "material/composite_damage.hpp"
+#include "model/material_builder.hpp"
 
 namespace plyimpact::test {
 
@@ -69,7 +70,7 @@ class PointDriver {
   using V6 = std::array<double, 6>;
 
   explicit PointDriver(const config::MatCompositeDamage& m, const Eigen::Matrix3d& q = Eigen::Matrix3d::Identity())
-      : p_(material::make_composite_damage_params(m, {"test", 0, 0, "mat"})), q_(q) {
+      : p_(model::composite_damage_params(m, {"test", 0, 0, "mat"})), q_(q) {
     material::composite_damage_init(p_, h_.data());
   }
 

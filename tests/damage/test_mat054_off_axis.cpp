@@ -27,7 +27,7 @@ Eigen::Matrix3d axes_of(const OffAxisCase& c, const config::MatCompositeDamage& 
   Eigen::Matrix3d q;
   if (c.seed_vectors) {
     const double x_ref[3][8] = {};
-    const Mat3 r = material::material_axes(m.axes, m.axes.BETA, x_ref);
+    const Mat3 r = material::material_axes(model::material_axes_of(m.axes), m.axes.BETA, x_ref);
     for (int i = 0; i < 9; ++i) q(i / 3, i % 3) = r[i];
   } else {
     const double t = c.theta_deg * M_PI / 180;

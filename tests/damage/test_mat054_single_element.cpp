@@ -396,7 +396,7 @@ TEST(Mat054Erosion, TransverseShearDamageAndEpsrErosion) {
 // ------------------------------------------------------------------ helpers
 
 TEST(Mat054Helpers, WaveModulusIsTheUndamagedOne) {
-  const auto p = material::make_composite_damage_params(t800_card(), {"t", 0, 0, "m"});
+  const auto p = model::composite_damage_params(t800_card(), {"t", 0, 0, "m"});
   EXPECT_EQ(material::composite_damage_wave_modulus(p), material::max_wave_modulus(p.C));
   EXPECT_GE(p.wave_modulus, p.C[0]);  // at least the modulus along a
 }
@@ -418,19 +418,6 @@ TEST(Mat054Helpers, OutputFieldsFollowTheHistory) {
     } else if (n == "mat054_erosion_cause") {
       EXPECT_EQ(v[i], 0.0);
     }
-  }
-}
-
-TEST(Mat054Helpers, UnsupportedFieldIsRefusedByTheParameterBuilder) {
-  auto m = t800_card();
-  m.TWOWAY = 1;
-  try {
-    material::make_composite_damage_params(m, {"scene.yaml", 3, 5, "materials.ply"});
-    ADD_FAILURE() << "no InputError";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("scene.yaml:3:5: materials.ply: field not implemented: 2WAY=1"),
-              std::string::npos)
-        << e.what();
   }
 }
 

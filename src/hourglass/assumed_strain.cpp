@@ -1,11 +1,11 @@
-#include "solver/assumed_strain_hourglass.hpp"
+#include "hourglass/assumed_strain.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
 #include "element/hex8.hpp"
 
-namespace plyimpact::solver {
+namespace plyimpact::hourglass {
 
 namespace {
 
@@ -109,4 +109,4 @@ std::vector<double> assumed_strain_moduli(const model::Model& model, const model
   return out;
 }
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::hourglass

@@ -1,0 +1,92 @@
+// *MAT_054 / *MAT_055 update of the element pass. The stress is kept in global axes; the material
+// axes Q (rows a, b, c) rotate with the element, Q_new = Q_old R^T. At a point: rotate the stress
+// into the old axes, the strain increment D dt into the new ones (engineering shear for
+// composite_damage_update), update in material axes, rotate back with Q_new. ELFORM 1 rotates the
+// axes with the point's R; a multi-point family gives the element's one rotation (kElementRotation:
+// a ply has one orientation per element) through begin_element.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+
+#include "material/composite_damage.hpp"
+#include "material/lane_point.hpp"
+
+namespace plyimpact::material {
+
+// One point: see above. history: kCompositeDamageHistory values. Out of line: it is called per
+// point and the damage update it wraps is out of line anyway.
+CompositeDamageResult composite_point_update(const CompositeDamageParams& p, const double Qo[9], const double Qn[9],
+                                             const double D[6], double dt, const CompositeDamageContext& ctx,
+                                             double s[6], double* history);
+
+// Q_new = Q_old R^T (row-major).
+inline void rotate_axes(const double Qo[9], const double R[9], double Qn[9]) {
+  for (int a = 0; a < 3; ++a)
+    for (int j = 0; j < 3; ++j) Qn[3 * a + j] = Qo[3 * a] * R[3 * j] + Qo[3 * a + 1] * R[3 * j + 1] + Qo[3 * a + 2] * R[3 * j + 2];
+}
+
+class CompositeDamageLanes {
+ public:
+  static constexpr bool kTotalLagrangian = false;
+  static constexpr bool kElementRotation = true;  // multi-point families call begin_element
+  static constexpr bool kIncremental = true;
+  // history: (elements * points, kCompositeDamageHistory); axes: (elements, 9) current axes;
+  // initial_dt: (elements) element step at t = 0 (TFAIL ratio); erosion_base + cause is reported.
+  CompositeDamageLanes(const CompositeDamageParams& p, double* history, double* axes, const double* initial_dt,
+                       int erosion_base)
+      : p_(p), history_(history), axes_(axes), initial_dt_(initial_dt), base_(erosion_base) {}
+
+  PLYIMPACT_LANE_KERNEL void update(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) {
+    for (int l = 0; l < kLanes; ++l) {
+      for (int i = 0; i < 6; ++i) s[i][l] = 0;
+      if (l >= p.n || !p.ok[l]) continue;
+      const Index e = p.elem[l];
+      const double* Qo = &axes_[9 * std::size_t(e)];
+      double Qn[9], Rl[9];
+      for (int i = 0; i < 9; ++i) Rl[i] = p.R[i][l];
+      rotate_axes(Qo, Rl, Qn);
+      double sl[6], Dl[6];
+      for (int i = 0; i < 6; ++i) sl[i] = s_old[i][l], Dl[i] = p.D[i][l];
+      CompositeDamageContext ctx;
+      ctx.element_dt = p.dt > 0 ? p.element_dt[l] : 0.0;
+      ctx.initial_dt = initial_dt_[e];
+      const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl,
+                                              &history_[std::size_t(e) * kCompositeDamageHistory]);
+      for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
+      for (int i = 0; i < 9; ++i) qnew_[i][l] = Qn[i];
+      if (res.erode) erode[l] = base_ + res.cause;
+    }
+  }
+  // The rotated axes of a surviving lane become the element's.
+  void commit(Index e, int l) {
+    for (int i = 0; i < 9; ++i) axes_[9 * std::size_t(e) + i] = qnew_[i][l];
+  }
+
+  // Multi-point families: the element's rotation R (from its mean spin) before its points, the
+  // axes stored at once (also for an element that erodes, as its stress is zero from then on).
+  void begin_element(Index e, const double R[9], double dt, double element_dt) {
+    std::copy_n(&axes_[9 * std::size_t(e)], 9, qo_);
+    rotate_axes(qo_, R, qn_);
+    ctx_ = CompositeDamageContext{};
+    ctx_.element_dt = dt > 0 ? element_dt : 0.0;
+    ctx_.initial_dt = initial_dt_[e];
+  }
+  int update_point(const Point& p, double s[6], double* history) const {
+    const auto res = composite_point_update(p_, qo_, qn_, p.D, p.dt, ctx_, s, history);
+    return res.erode ? base_ + res.cause : 0;
+  }
+  void end_element(Index e) { std::copy_n(qn_, 9, &axes_[9 * std::size_t(e)]); }
+
+ private:
+  const CompositeDamageParams& p_;
+  double* history_;
+  double* axes_;
+  const double* initial_dt_;
+  int base_;
+  alignas(64) double qnew_[9][kLanes] = {};
+  double qo_[9] = {}, qn_[9] = {};
+  CompositeDamageContext ctx_;
+};
+
+}  // namespace plyimpact::material

@@ -1,0 +1,42 @@
+// Element erosion: why an element is deleted, and what deleting it means for the element pass.
+// An eroded element carries no stress and no force from then on; the energy it holds stays in the
+// totals and is reported as eroded; its mass stays on the nodes. The solver removes it from the
+// schedule and the contact surfaces (it reads ChunkResult::eroded).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "core/types.hpp"
+#include "solver/state.hpp"
+
+namespace plyimpact::solver {
+
+// Why an element was eroded (history.csv and summary.json count them per part and cause).
+enum class ErosionCause : int {
+  PlasticStrain = 1,  // MAT_003 FS / MAT_024 FAIL
+  TimeStep = 2,       // control.erode_tsmin: the element step fell below the limit
+  CompositeBase = 10, // MAT_054: 10 + material::CompositeDamageCause
+};
+const char* erosion_cause_name(int cause);
+
+// control.erode_tsmin (ERODE/TSMIN): an element whose step fell below the limit is eroded with
+// that cause (it replaces a material failure of the same cycle). Not in the initial evaluation.
+inline int time_step_erosion(int cause, double erode_tsmin, double dt, double element_dt) {
+  if (erode_tsmin > 0 && dt > 0 && element_dt < erode_tsmin) return int(ErosionCause::TimeStep);
+  return cause;
+}
+
+// Deletes element e (block index; id: its element id) with `points` integration points: zero
+// stress; appended to `eroded` with its cause, and the internal + hourglass energy it holds
+// (already including this cycle's) added to `eroded_energy`.
+inline void erode_element(BlockState& st, Index e, Index id, int cause, int points,
+                          std::vector<std::pair<Index, int>>& eroded, double& eroded_energy) {
+  std::fill_n(&st.stress[6 * std::size_t(points) * std::size_t(e)], 6 * points, 0.0);
+  eroded.emplace_back(id, cause);
+  eroded_energy += st.internal_energy[e] + st.hourglass_energy[e];
+}
+
+}  // namespace plyimpact::solver
