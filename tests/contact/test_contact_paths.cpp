@@ -39,7 +39,7 @@
 
 #include "contact/penalty_contact.hpp"
 #include "mesh/scene_mesher.hpp"
-#include "solver/frame_builder.hpp"
+#include "run/frame_builder.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -191,7 +191,7 @@ TEST(SingleSurface, StackedBoxesPushedTogetherActAsSeriesSprings) {
   EXPECT_LT(max_err, 0.01);
   // Output: the frame's point field contact_force carries the last cycle's contact forces: +F on
   // the upper box's nodes, -F on the lower box's (F = the transmitted normal force), nothing else.
-  const output::Frame frame = solver::make_frame(solver);
+  const output::Frame frame = run::make_frame(solver);
   const output::Field* cf = nullptr;
   for (const auto& fld : frame.point_fields)
     if (fld.name == "contact_force") cf = &fld;
