@@ -12,8 +12,8 @@
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
-#include "model/subsystems.hpp"
 #include "run/run.hpp"
+#include "solver/contributors.hpp"
 #include "solver/solver.hpp"
 
 namespace plyimpact::app {
@@ -114,7 +114,7 @@ int check(const std::string& path, std::ostream& out) {
   }
   print_mesher_extras(m, out);
   out << "  subsystems:\n";
-  for (const auto& s : model::subsystems(m)) out << "    [" << (s.active ? "on " : "off") << "] " << s.name << ": " << s.detail << "\n";
+  for (const auto& s : plyimpact::solver::subsystems(m)) out << "    [" << (s.active ? "on " : "off") << "] " << s.name << ": " << s.detail << "\n";
   const auto& st = solver.state();
   for (std::size_t i = 0; i < solver.contacts().size(); ++i) {
     const auto& c = solver.contacts()[i];

@@ -4,29 +4,24 @@ namespace plyimpact::run {
 
 namespace {
 
-std::vector<std::string> history_columns(const model::Model& model) {
-  std::vector<std::string> cols = {"time",         "dt",    "kinetic_energy", "internal_energy",
-                                   "hourglass_energy", "bulk_viscous_energy", "external_work",
-                                   "total_energy", "energy_ratio", "dt_element"};
+// Columns: time and step, the integrator's energies, total and ratio, the controlling element, the
+// reactions, then each force contributor's energies and own columns, then erosion. Energies come
+// from the balance's named list (solver/energies.hpp), so a new energy is named in one place.
+std::vector<std::string> history_columns(const model::Model& model, const solver::Solver* solver) {
+  const solver::Energies own;
+  std::vector<std::string> cols = {"time", "dt"};
+  for (const auto& t : own.terms) cols.push_back(t.column);
+  for (const char* c : {"total_energy", "energy_ratio", "dt_element"}) cols.push_back(c);
   for (int set : model.constrained_sets)
     for (const char* c : {"_fx", "_fy", "_fz"}) cols.push_back("reaction_" + model.node_sets[set].name + c);
-  // Contact, rigid-wall and rigid-body columns only when the scene has them.
-  if (!model.contacts.empty()) {
-    cols.push_back("contact_energy");
-    cols.push_back("friction_energy");
-    for (const auto& c : model.contacts)
-      for (const char* q : {"_fx", "_fy", "_fz", "_normal", "_tangential"})
-        cols.push_back("contact_" + c.spec.name + q);
+  if (solver) {
+    const auto& terms = solver->balance().terms;
+    for (std::size_t c = 0; c < solver->contributors().size(); ++c) {
+      for (const auto& t : terms)
+        if (t.owner == int(c)) cols.push_back(t.column);
+      for (auto& col : solver->contributors()[c]->history_columns()) cols.push_back(std::move(col));
+    }
   }
-  if (!model.rigid_walls.empty()) {
-    cols.push_back("rigidwall_energy");
-    for (const auto& w : model.rigid_walls)
-      for (const char* q : {"_normal", "_tangential"}) cols.push_back("wall_" + w.name + q);
-  }
-  for (const auto& b : model.rigid_bodies)
-    for (const char* q : {"_x", "_y", "_z", "_vx", "_vy", "_vz", "_ax", "_ay", "_az", "_contact_fx", "_contact_fy",
-                          "_contact_fz"})
-      cols.push_back("rigid_" + b.name + q);
   if (can_erode(model)) {
     cols.push_back("eroded_elements");
     cols.push_back("eroded_energy");
@@ -47,40 +42,33 @@ bool can_erode(const model::Model& model) {
 
 HistoryWriter::HistoryWriter(const model::Model& model, std::filesystem::path file, double interval,
                              double flush_interval)
-    : file_(std::move(file)),
+    : model_(model),
+      file_(std::move(file)),
       t_end_(model.control.termination_time),
-      table_(history_columns(model)),
       rows_(interval),
       flushes_(flush_interval) {}
 
 void HistoryWriter::add_row(const solver::Solver& solver) {
   const solver::State& s = solver.state();
   const solver::Energies& e = solver.balance();
-  std::vector<double> row = {e.time,     s.dt_prev_half, e.kinetic,       e.internal,           e.hourglass,
-                             e.bulk_viscous, e.external_work, e.total(), solver.energy_ratio(), double(s.dt_element)};
-  row.insert(row.end(), s.reaction.begin(), s.reaction.end());
-  if (!solver.contacts().empty()) {
-    row.push_back(e.contact);
-    row.push_back(e.friction);
-    for (const auto& c : solver.contacts()) {
-      const auto& f = c.forces();
-      row.insert(row.end(), {f.resultant[0], f.resultant[1], f.resultant[2], f.normal, f.tangential});
-    }
+  row_.assign({e.time, s.dt_prev_half});
+  for (const auto& t : e.terms)
+    if (t.owner < 0) row_.push_back(t.value);
+  row_.insert(row_.end(), {e.total(), solver.energy_ratio(), double(s.dt_element)});
+  row_.insert(row_.end(), s.reaction.begin(), s.reaction.end());
+  for (std::size_t c = 0; c < solver.contributors().size(); ++c) {
+    for (const auto& t : e.terms)
+      if (t.owner == int(c)) row_.push_back(t.value);
+    solver.contributors()[c]->history_values(row_);
   }
-  if (!solver.rigid_walls().empty()) {
-    row.push_back(e.rigid_wall);
-    for (const auto& w : solver.rigid_walls()) row.insert(row.end(), {w.normal_force(), w.tangential_force()});
-  }
-  for (const auto& b : solver.rigid_bodies())
-    row.insert(row.end(), {b.x[0], b.x[1], b.x[2], b.v[0], b.v[1], b.v[2], b.a[0], b.a[1], b.a[2], b.contact_force[0],
-                           b.contact_force[1], b.contact_force[2]});
-  if (can_erode(solver.model())) row.insert(row.end(), {double(s.eroded_elements), s.eroded_energy});
-  table_.add_row(row);
+  if (can_erode(solver.model())) row_.insert(row_.end(), {double(s.eroded_elements), s.eroded_energy});
+  table_->add_row(row_);
 }
 
 void HistoryWriter::start(const solver::Solver& solver) {
+  table_.emplace(history_columns(model_, &solver));
   add_row(solver);
-  table_.write_csv(file_);
+  table_->write_csv(file_);
 }
 
 void HistoryWriter::after_cycle(const solver::Solver& solver) {
@@ -90,14 +78,14 @@ void HistoryWriter::after_cycle(const solver::Solver& solver) {
     rows_.advance(t);
   }
   if (flushes_.due(t) || t >= t_end_ * (1 - 1e-12)) {
-    table_.write_csv(file_);
+    table_->write_csv(file_);
     if (flushes_.due(t)) flushes_.advance(t);
   }
 }
 
 void HistoryWriter::stop(const solver::Solver* solver, RunReport& report) {
-  (void)solver;
-  table_.write_csv(file_);
+  if (!table_) table_.emplace(history_columns(model_, solver));  // the solver could not be built
+  table_->write_csv(file_);
   report.history = file_;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,9 +28,11 @@ class HistoryWriter : public RunObserver {
  private:
   void add_row(const solver::Solver& solver);
 
+  const model::Model& model_;
   std::filesystem::path file_;
   double t_end_;
-  output::HistoryTable table_;
+  std::optional<output::HistoryTable> table_;  // columns known once the solver is built
+  std::vector<double> row_;
   Sampler rows_, flushes_;
 };
 

@@ -12,8 +12,8 @@ void HourglassCheck::after_cycle(const solver::Solver& solver) {
   if (!samples_.due(t) || !(solver.balance().time > 0)) return;
   samples_.advance(t);
   const solver::Energies& e = solver.balance();
-  peak_internal_ = std::max(peak_internal_, e.internal);
-  if (peak_internal_ > 0) max_ratio_ = std::max(max_ratio_, e.hourglass / peak_internal_);
+  peak_internal_ = std::max(peak_internal_, e.internal());
+  if (peak_internal_ > 0) max_ratio_ = std::max(max_ratio_, e.hourglass() / peak_internal_);
 }
 
 void HourglassCheck::stop(const solver::Solver* solver, RunReport& report) {
@@ -39,7 +39,7 @@ ContactEnergyCheck::ContactEnergyCheck(const model::Model& model)
 void ContactEnergyCheck::after_cycle(const solver::Solver& solver) {
   if (energies_.empty()) return;
   for (std::size_t c = 0; c < energies_.size(); ++c) energies_[c] = solver.contacts()[c].energy();
-  watch_.observe(energies_, solver.state().time, solver.state().initial_total_energy + solver.balance().external_work);
+  watch_.observe(energies_, solver.state().time, solver.state().initial_total_energy + solver.balance().external_work());
 }
 
 void ContactEnergyCheck::stop(const solver::Solver* solver, RunReport& report) {

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "model/subsystems.hpp"
+#include "solver/contributors.hpp"
 #include "output/json.hpp"
 #include "run/history_writer.hpp"
 
@@ -27,7 +27,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
   j["threads"] = solver ? solver->threads_used() : omp_get_max_threads();
   j["ns_per_element_cycle"] = report.ns_per_element_cycle;
   output::Json subs = output::Json::object();
-  for (const auto& s : model::subsystems(model)) {
+  for (const auto& s : solver::subsystems(model)) {
     output::Json entry = output::Json::object();
     entry["active"] = s.active;
     entry["detail"] = s.detail;
@@ -38,16 +38,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     const solver::Energies& e = solver->balance();
     output::Json en = output::Json::object();
     en["time"] = e.time;
-    en["kinetic"] = e.kinetic;
-    en["internal"] = e.internal;
-    en["hourglass"] = e.hourglass;
-    en["bulk_viscous"] = e.bulk_viscous;
-    en["external_work"] = e.external_work;
-    if (!model.contacts.empty()) {
-      en["contact"] = e.contact;
-      en["friction"] = e.friction;
-    }
-    if (!model.rigid_walls.empty()) en["rigid_wall"] = e.rigid_wall;
+    for (const auto& t : e.terms) en[t.key] = t.value;
     en["total"] = e.total();
     en["energy_ratio"] = solver->energy_ratio();
     j["final_energies"] = en;

@@ -53,7 +53,7 @@ TEST(ExposedFace, NodeAlreadyBehindAFaceErosionExposesGetsAnOffsetNotASpring) {
   double e_min = 0, ratio_max = 1, ratio_min = 1, peak = 0, vx_min = 1;
   while (solver.state().time < 150e-6) {  // reaches the +x wall after ~105 us and bounces
     solver.step();
-    e_min = std::min(e_min, solver.balance().contact);
+    e_min = std::min(e_min, solver.balance().value("contact"));
     ratio_max = std::max(ratio_max, solver.energy_ratio());
     ratio_min = std::min(ratio_min, solver.energy_ratio());
     peak = std::max(peak, solver.contacts()[0].forces().normal);

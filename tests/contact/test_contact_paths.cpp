@@ -252,7 +252,7 @@ TEST(LaminateImpactor, RigidSurfaceImpactorOnSmallLaminate) {
   const double dv = solver.rigid_bodies()[0].v[2] - v_start;
   std::cout << "laminate + impactor: " << cycles << " cycles to " << solver.state().time << " s, peak contact force "
             << peak << " N, body dv " << dv << " m/s vs impulse / m " << impulse / m << ", contact energy "
-            << solver.balance().contact << " J, max |ratio - 1| " << max_ratio_err << "\n";
+            << solver.balance().value("contact") << " J, max |ratio - 1| " << max_ratio_err << "\n";
   EXPECT_GT(peak, 0.0);
   EXPECT_GT(dv, 0.0);  // the plate slows the body (downward velocity becomes less negative)
   EXPECT_NEAR(dv, impulse / m, 1e-9 * std::abs(v_start));

@@ -118,7 +118,7 @@ TEST_P(ErosionSolver, BarPulledApartKeepsEnergyBalance) {
   solver::Solver s(model);
   test::run_until(s, 2.0e-4);
   std::cout << "bar: " << s.state().eroded_elements << " eroded, eroded energy " << s.state().eroded_energy
-            << " J, energy ratio " << s.energy_ratio() << ", external work " << s.balance().external_work << " J\n";
+            << " J, energy ratio " << s.energy_ratio() << ", external work " << s.balance().external_work() << " J\n";
   EXPECT_GE(s.state().eroded_elements, 1);
   EXPECT_GT(s.state().eroded_energy, 0.0);
   EXPECT_NEAR(s.energy_ratio(), 1.0, 0.01);
