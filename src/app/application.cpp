@@ -14,8 +14,8 @@
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
-#include "model/subsystems.hpp"
-#include "solver/run.hpp"
+#include "run/run.hpp"
+#include "solver/contributors.hpp"
 #include "solver/solver.hpp"
 
 namespace plyimpact::app {
@@ -150,7 +150,7 @@ int check(const std::string& path, const Overrides& overrides, std::ostream& out
   }
   print_mesher_extras(m, out);
   out << "  subsystems:\n";
-  for (const auto& s : model::subsystems(m)) out << "    [" << (s.active ? "on " : "off") << "] " << s.name << ": " << s.detail << "\n";
+  for (const auto& s : plyimpact::solver::subsystems(m)) out << "    [" << (s.active ? "on " : "off") << "] " << s.name << ": " << s.detail << "\n";
   const auto& st = solver.state();
   for (std::size_t i = 0; i < solver.contacts().size(); ++i) {
     const auto& c = solver.contacts()[i];
@@ -189,14 +189,14 @@ int check(const std::string& path, const Overrides& overrides, std::ostream& out
 
 int run(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out) {
   const Loaded l = load(path, overrides);
-  solver::RunOptions options;
+  run::RunOptions options;
   options.output_dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
   options.progress = &out;
   options.progress_in_place = (&out == &std::cout) && isatty(STDOUT_FILENO);
   out << "plyimpact " << PLYIMPACT_VERSION << ": running " << path << " (" << l.model.num_nodes() << " nodes, "
       << l.model.num_elements() << " elements)\n";
   print_overrides(overrides, out);
-  const solver::RunReport r = solver::run_model(l.model, options);
+  const run::RunReport r = run::run_model(l.model, options);
   for (const auto& w : r.warnings) out << "warning: " << w << "\n";
   char buf[256];
   std::snprintf(buf, sizeof buf, "%s at t = %.6g s after %ld cycles, %.2f s wall, %.1f ns per element-cycle, energy ratio %.4f\n",

@@ -84,4 +84,14 @@ void RigidWallConstraint::apply(const double* x, const double* v, double* f, con
   active_dt_ = dt_n1;
 }
 
+void RigidWallConstraint::visit_state(StateVisitor& visitor) {
+  visitor.array("active_nodes", active_);
+  visitor.array("active_forces", active_f_);
+  visitor.scalar("active_dt", active_dt_);
+  visitor.scalar("energy", energy_);
+  visitor.scalar("normal_force", normal_force_);
+  visitor.scalar("tangential_force", tangential_force_);
+  visitor.scalar("resultant", resultant_);
+}
+
 }  // namespace plyimpact::contact

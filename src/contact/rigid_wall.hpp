@@ -11,6 +11,7 @@
 
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact::contact {
@@ -30,6 +31,9 @@ class RigidWallConstraint {
   Vec3 resultant() const { return resultant_; }              // N, force of the wall on the nodes
   double energy() const { return energy_; }                  // J, energy taken out by the wall
   std::size_t active_nodes() const { return active_.size(); }
+  // Run state: the nodes held at the last pass, their forces and step (their work is booked at
+  // the next pass), the energy and the last pass's force sums.
+  void visit_state(StateVisitor& visitor);
 
  private:
   const model::RigidWall& wall_;

@@ -44,6 +44,14 @@ class StateVisitor {
     block(name, sizeof(T), values.size(), values.data(), &resize_vector<T, A>, &values);
   }
 
+  // A vector whose size the model fixes (nodal and element arrays): a reader refuses another size
+  // instead of adopting it.
+  template <class T, class A>
+  void fixed_array(std::string_view name, std::vector<T, A>& values) {
+    static_assert(std::is_trivially_copyable_v<T>, "state values must be plain data");
+    block(name, sizeof(T), values.size(), values.data(), nullptr, nullptr);
+  }
+
  private:
   template <class T, class A>
   static void* resize_vector(void* owner, std::size_t count) {

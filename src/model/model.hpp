@@ -14,7 +14,10 @@
 #include "material/composite_damage.hpp"
 #include "material/elastic.hpp"
 #include "material/plasticity.hpp"
-#include "mesh/mesh.hpp"
+
+namespace plyimpact::mesh {
+struct Mesh;
+}
 
 namespace plyimpact::model {
 
@@ -156,6 +159,37 @@ struct Contact {
   ContactSide a, b;    // b unused for single-surface contact
 };
 
+// A delaminating interface between plies `lower_ply` and `upper_ply` (0-based, upper = lower + 1),
+// where each ply has its own coincident nodes: lower_nodes[k] and upper_nodes[k] are pair k. Each
+// pair carries its tributary area (a quarter of every interface segment it is a corner of) and the
+// unit normal from the lower to the upper ply (area-weighted mean of those segments' normals), in
+// the reference configuration. Segments are quads on each side, outward from their ply (the lower
+// side's face +normal, the upper side's are the same faces in reverse order).
+struct Interface {
+  int id = 0;  // 1-based interface number: interface i lies between plies i and i+1 (1-based)
+  int lower_ply = 0, upper_ply = 0;
+  double z = 0;                                        // m, reference height
+  std::vector<Index> lower_nodes, upper_nodes;         // (num_pairs)
+  std::vector<double> area;                            // (num_pairs) m^2
+  std::vector<double> normal;                          // (num_pairs, 3)
+  std::vector<Index> lower_segments, upper_segments;   // (num_segments, 4)
+  std::size_t num_pairs() const { return lower_nodes.size(); }
+};
+
+// The meshed impactor as the run sees it: its closed surface (own coordinates, outward quads) and
+// the mass properties of the exact (not faceted) shape. A deformable impactor is also a hex part
+// of the model; its surface_nodes map the surface to model nodes.
+struct Impactor {
+  bool rigid = true;
+  std::vector<double> surface_coords;    // (num_surface_nodes, 3), m
+  std::vector<Index> surface_quads;      // (num_quads, 4) into surface_coords, outward normal
+  std::vector<Index> surface_nodes;      // deformable: (num_surface_nodes) model node of each surface node
+  double mass = 0;                       // kg
+  Vec3 centre_of_mass{0, 0, 0};          // m
+  Mat3 inertia{};                        // kg m^2 about the centre of mass, global axes
+  Vec3 velocity{0, 0, 0};                // m/s, initial
+};
+
 struct Model {
   std::string name;
   config::ControlSpec control;
@@ -172,12 +206,11 @@ struct Model {
   std::vector<ConstrainedDof> constraints;
   std::vector<int> constrained_sets;  // node sets that carry a boundary condition (reaction output)
   Schedule schedule;
-  // From the laminate mesher (issue 3); carried for the interface and contact subsystems, which do
-  // not use them yet.
+  // From the laminate mesher, converted once by build_model (the run never sees mesher types).
   std::vector<int> element_ply;                // (element_id - 1) -> 0-based ply, -1 if none; may be empty
-  std::vector<mesh::Interface> interfaces;     // delaminating interfaces (coincident node pairs, segments)
+  std::vector<Interface> interfaces;  // delaminating interfaces (coincident node pairs, segments)
   bool interfaces_bonded = false;  // true: the pairs are merged in the element connectivity (no tiebreak yet)
-  std::optional<mesh::ImpactorMesh> impactor;  // impactor surface and mass properties
+  std::optional<Impactor> impactor;  // impactor surface and mass properties
   // Contact and rigid bodies (built only when the scene asks for them).
   std::vector<RigidBody> rigid_bodies;
   std::vector<RigidWall> rigid_walls;

@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "element/hex8.hpp"
 #include "model/material_builder.hpp"
+#include "model/mesh_conversion.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact::model {
@@ -246,8 +247,8 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
   }
 
   model.element_ply = mesh.element_ply;
-  model.interfaces = mesh.interfaces;
-  model.impactor = mesh.impactor;
+  for (const auto& itf : mesh.interfaces) model.interfaces.push_back(make_interface(itf, model.X));
+  if (mesh.impactor) model.impactor = make_impactor(*mesh.impactor);
   add_rigid_bodies_and_contacts(scene, model);
   model.schedule = make_schedule(model.blocks, num_nodes);
   return model;

@@ -33,40 +33,6 @@ std::vector<Subsystem> subsystems(const Model& model) {
   for (const auto& c : model.constraints) (c.curve < 0 ? fixed : prescribed)++;
   list.push_back({"boundary_conditions", !model.constraints.empty(),
                   std::to_string(fixed) + " fixed dof, " + std::to_string(prescribed) + " prescribed-velocity dof"});
-  if (model.contacts.empty()) {
-    list.push_back({"contact", false,
-                    model.impactor ? "left out: an impactor is meshed, but the scene defines no contact, so the "
-                                     "impactor does not act on the plate"
-                                   : "left out: the scene defines no contact, so no contact surface or search is built"});
-  } else {
-    std::ostringstream c;
-    for (const auto& ct : model.contacts) {
-      const bool single = ct.spec.type == config::ContactSpec::Type::SingleSurface;
-      c << (c.tellp() > 0 ? "; " : "") << ct.spec.name << ": " << (ct.spec.eroding ? "eroding " : "automatic ")
-        << (single ? "single surface " + ct.a.label : "surface to surface " + ct.a.label + " / " + ct.b.label)
-        << ", SOFT " << ct.spec.SOFT;
-      if (ct.spec.FS > 0 || ct.spec.FD > 0) c << ", friction FS " << ct.spec.FS << " FD " << ct.spec.FD;
-    }
-    list.push_back({"contact", true, "penalty, node to segment, bucket search; " + c.str()});
-  }
-  if (model.rigid_bodies.empty()) {
-    list.push_back({"rigid_bodies", false, "left out: no MAT_020 part and no rigid impactor in contact"});
-  } else {
-    std::ostringstream r;
-    for (const auto& b : model.rigid_bodies)
-      r << (r.tellp() > 0 ? "; " : "") << b.name << " (" << b.nodes.size() << " nodes, " << b.mass << " kg"
-        << (b.part < 0 ? ", surface only" : "") << ")";
-    list.push_back({"rigid_bodies", true, "6-dof, Rodrigues rotation update; " + r.str()});
-  }
-  if (model.rigid_walls.empty()) {
-    list.push_back({"rigid_walls", false, "left out: the scene defines no rigid wall"});
-  } else {
-    std::ostringstream w;
-    for (const auto& wall : model.rigid_walls)
-      w << (w.tellp() > 0 ? "; " : "") << wall.name << " (" << (wall.length_u > 0 ? "finite" : "infinite") << ", "
-        << wall.nodes.size() << " slave nodes" << (wall.friction > 0 ? ", friction" : "") << ")";
-    list.push_back({"rigid_walls", true, "planar, kinematic constraint; " + w.str()});
-  }
   if (model.interfaces.empty()) {
     list.push_back({"delamination", false, "left out: no delaminating interface, so no interface node is duplicated"});
   } else {

@@ -1,6 +1,7 @@
 // Which parts of the solver a scene switches on, and why the others are left out. The same list is
 // printed by `plyimpact check` and written to summary.json, so a user sees at once that, say, a
-// scene with no contact builds no contact search.
+// scene with no contact builds no contact search. This is the model-level part; the force
+// contributors (contact, walls, rigid bodies, gravity) describe themselves (solver::subsystems).
 #pragma once
 
 #include <string>

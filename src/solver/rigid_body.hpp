@@ -13,6 +13,7 @@
 
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact::solver {
@@ -41,6 +42,7 @@ class RigidBodies {
   const std::vector<RigidBodyState>& states() const { return states_; }
   std::vector<RigidBodyState>& states() { return states_; }
   double kinetic_energy() const;  // at the current half step (for the initial balance)
+  void visit_state(StateVisitor& visitor) { visitor.fixed_array("bodies", states_); }
 
  private:
   const model::Model& model_;

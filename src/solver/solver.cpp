@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "material/composite_damage.hpp"
 #include "solver/assumed_strain_hourglass.hpp"
+#include "solver/contributors.hpp"
 
 namespace plyimpact::solver {
 
@@ -106,45 +107,48 @@ Solver::Solver(const model::Model& model) : model_(model) {
   check_after_pass(0.0);
   state_.dt_initial = state_.dt_next_half;
 
-  // Contacts (built only when the scene defines them), initial penetrations, contact time step.
-  contacts_.reserve(model.contacts.size());
-  for (const auto& c : model.contacts) {
-    contacts_.emplace_back(model, c, state_.x, state_.dt_initial);
-    initial_penetrations_.push_back(contacts_.back().resolve_initial_penetrations(state_.x));
-  }
-  for (const auto& w : model.rigid_walls) walls_.emplace_back(w);
-  // A priori check of the stiffest spring that can form (the run itself combines the element step
-  // with the springs actually active, update_contact_step): warn when it would dominate the step.
-  double dt_apriori = std::numeric_limits<double>::infinity();
-  std::string stiffest;
-  for (const auto& c : contacts_)
-    if (c.stable_step() < dt_apriori) {
-      dt_apriori = c.stable_step();
-      stiffest = c.name();
-    }
-  if (std::isfinite(dt_apriori)) {
-    const double dt_e = dt_element_crit_, tssfac = model.control.tssfac;
-    // Stiffer than the elements: the springs' step applies from the start, not only once they act,
-    // so the first contact step cannot drive a node a whole element step deep into a stiff spring
-    // (0.5 k g^2 created from nothing, more than the impact energy at 100x the default penalty).
-    if (dt_apriori < dt_e) {
-      dt_contact_floor_ = dt_apriori;
-      const double dt_combined = tssfac * combined_step(dt_e, dt_apriori);
-      warnings_.push_back(msg() << "contact '" << stiffest << "': the contact frequency exceeds the element step by "
-                                << dt_e / dt_apriori << " x (stiffest penalty spring 2/omega = " << dt_apriori
-                                << " s, elements " << dt_e << " s); while it is in contact the combined stable "
-                                << "step reduces the time step from " << tssfac * dt_e << " s to about "
-                                << dt_combined << " s (TSSFAC applied). Lower SLSFAC/SFS/SFM or use SOFT 1 to keep "
-                                << "the element step");
-    }
-  }
-  external_and_contact_forces(0.0);
+  build_contributors();
+  contributor_forces(0.0);
 
   double ke = rigid_ ? rigid_->kinetic_energy() : 0.0;
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < 3; ++d) ke += 0.5 * node_mass_[i] * state_.v[3 * i + d] * state_.v[3 * i + d];
-  state_.last_balance = Energies{0.0, ke, 0.0, 0.0, 0.0, 0.0};
+  for (auto& t : state_.last_balance.terms) t.value = 0.0;
+  state_.last_balance.terms[Energies::kKinetic].value = ke;
   state_.initial_total_energy = ke;
+}
+
+void Solver::build_contributors() {
+  ContributorSetup setup{model_, state_.x, state_.dt_initial, dt_element_crit_, rigid_.get(), node_body_, contributors_};
+  for (const auto& type : contributor_types())
+    if (type.describe(model_).active) contributors_.push_back(type.make(setup));
+  std::size_t most = 0;
+  for (std::size_t c = 0; c < contributors_.size(); ++c) {
+    const auto& con = contributors_[c];
+    if (const auto* p = dynamic_cast<const PenaltyContacts*>(con.get())) contacts_ = p;
+    if (const auto* p = dynamic_cast<const RigidWalls*>(con.get())) walls_ = p;
+    for (const auto& w : con->warnings()) warnings_.push_back(w);
+    const auto names = con->energy_names();
+    energy_counts_.push_back(names.size());
+    most = std::max(most, names.size());
+    for (const auto& e : names) state_.last_balance.terms.push_back({e.key, e.column, e.in_total, 0.0, int(c)});
+  }
+  energy_scratch_.assign(most, 0.0);
+}
+
+const std::vector<contact::PenaltyContact>& Solver::contacts() const {
+  static const std::vector<contact::PenaltyContact> none;
+  return contacts_ ? contacts_->contacts() : none;
+}
+
+const std::vector<contact::RigidWallConstraint>& Solver::rigid_walls() const {
+  static const std::vector<contact::RigidWallConstraint> none;
+  return walls_ ? walls_->walls() : none;
+}
+
+const std::vector<contact::InitialPenetrations>& Solver::initial_penetrations() const {
+  static const std::vector<contact::InitialPenetrations> none;
+  return contacts_ ? contacts_->initial_penetrations() : none;
 }
 
 const std::vector<RigidBodyState>& Solver::rigid_bodies() const {
@@ -152,40 +156,24 @@ const std::vector<RigidBodyState>& Solver::rigid_bodies() const {
   return rigid_ ? rigid_->states() : none;
 }
 
-void Solver::external_and_contact_forces(double dt) {
+void Solver::contributor_forces(double dt) {
   State& s = state_;
-  const std::size_t n = model_.num_nodes();
-  const Vec3& g = model_.gravity;
-  if (g[0] != 0 || g[1] != 0 || g[2] != 0)
-    for (std::size_t i = 0; i < n; ++i)
-      for (int d = 0; d < 3; ++d) s.f[3 * i + d] += model_.mass[i] * g[d];
-  double ec = 0, ef = 0;
-  for (auto& c : contacts_) {
-    c.apply(s.x.data(), s.v.data(), s.f.data(), dt);
-    ec += c.energy();
-    ef += c.friction_energy();
-  }
-  s.contact_energy = ec;
-  s.friction_energy = ef;
-  if (!contacts_.empty()) update_contact_step();
-  const double dt_n1 = 0.5 * (s.dt_prev_half + s.dt_next_half);
-  double ew = 0;
-  for (auto& w : walls_) {
-    w.apply(s.x.data(), s.v.data(), s.f.data(), model_.mass.data(), s.time, dt_n1, s.dt_next_half, dt);
-    ew += w.energy();
-  }
-  s.rigidwall_energy = ew;
-  if (rigid_) {
-    auto& bodies = rigid_->states();
-    for (auto& b : bodies) b.contact_force = {0, 0, 0};
-    for (const auto& c : contacts_) {
-      const auto& nodes = c.force_nodes();
-      const auto& fc = c.node_forces();
-      for (std::size_t u = 0; u < nodes.size(); ++u)
-        if (const int b = node_body_[nodes[u]]; b >= 0)
-          for (int d = 0; d < 3; ++d) bodies[b].contact_force[d] += fc[3 * u + d];
-    }
-  }
+  ForceContext context;
+  context.x = s.x.data();
+  context.v = s.v.data();
+  context.f = s.f.data();
+  context.mass = model_.mass.data();
+  context.time = s.time;
+  context.dt = dt;
+  using Phase = ForceContributor::Phase;
+  for (auto& c : contributors_)
+    if (c->phase() == Phase::Forces) c->apply(context);
+  update_step_bounds();
+  context.dt_n1 = 0.5 * (s.dt_prev_half + s.dt_next_half);
+  context.dt_next = s.dt_next_half;
+  for (const Phase phase : {Phase::Constraints, Phase::Bookkeeping})
+    for (auto& c : contributors_)
+      if (c->phase() == phase) c->apply(context);
 }
 
 void Solver::delete_elements(const std::vector<Index>& ids) {
@@ -201,6 +189,11 @@ void Solver::delete_elements(const std::vector<Index>& ids) {
     }
     if (!found) throw RunError(msg() << "cannot delete element " << id << ": no such element");
   }
+  update_chunk_ranges();
+  for (auto& c : contributors_) c->on_erosion(alive_, state_.x);
+}
+
+void Solver::update_chunk_ranges() {
   for (std::size_t c = 0; c < model_.schedule.chunks.size(); ++c) {
     const auto& chunk = model_.schedule.chunks[c];
     const auto& alive = alive_[chunk.block];
@@ -214,11 +207,22 @@ void Solver::delete_elements(const std::vector<Index>& ids) {
       if (e > start) ranges.push_back({start, e});
     }
   }
-  for (auto& c : contacts_)
-    if (c.eroding()) c.rebuild(alive_, state_.x);
 }
 
-double Solver::combined_step(double dt_element, double dt_contact) {
+void Solver::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "solver");
+  state_.visit_state(visitor);
+  visitor.fixed_array("constraint_force", constraint_force_);
+  visitor.fixed_array("constraint_work", constraint_work_);
+  visitor.scalar("dt_element_crit", dt_element_crit_);
+  for (std::size_t b = 0; b < alive_.size(); ++b) visitor.array("alive " + std::to_string(b), alive_[b]);
+  update_chunk_ranges();  // derived from alive_ (a reader has just replaced it)
+  if (rigid_) rigid_->visit_state(visitor);
+  StateGroup forces(visitor, "contributors");
+  for (auto& c : contributors_) c->visit_state(visitor);
+}
+
+double combined_step(double dt_element, double dt_contact) {
   // The element and contact stiffnesses add: K = K_e + K_c. The highest frequency of the
   // mass-normalised sum is at most the sum of the highest of each (Weyl's inequality for symmetric
   // matrices, lambda_max(A + B) <= lambda_max(A) + lambda_max(B)), so with omega_e = 2 / dt_e and
@@ -236,14 +240,13 @@ double Solver::combined_step(double dt_element, double dt_contact) {
   return dt_element / std::sqrt(1.0 + r * r);
 }
 
-void Solver::update_contact_step() {
-  // After the contact pass at x^{n+1}: the springs now active enter dt^{n+3/2}. Per cycle, as the
+void Solver::update_step_bounds() {
+  // After the Forces phase at x^{n+1}: the springs now active enter dt^{n+3/2}. Per cycle, as the
   // nodal step of Radioss does with the contact stiffness, so the approach phase (no spring) keeps
   // the element step and a stiff contact lowers it only while it acts.
   State& s = state_;
   double dt_contact = std::numeric_limits<double>::infinity();
-  for (const auto& c : contacts_) dt_contact = std::min(dt_contact, c.spring_stable_step());
-  if (dt_contact_floor_ > 0) dt_contact = std::min(dt_contact, dt_contact_floor_);
+  for (const auto& c : contributors_) dt_contact = std::min(dt_contact, c->stable_step());
   s.dt_contact = std::isfinite(dt_contact) ? dt_contact : 0.0;
   if (!(dt_element_crit_ > 0)) return;  // no element step (all eroded): keep the last step
   s.dt_contact_controls = s.dt_contact > 0 && s.dt_contact < dt_element_crit_;
@@ -300,27 +303,20 @@ void Solver::step() {
   for (double k : node_chunk_ke_) ke += k;
   double rigid_work = 0;
   if (rigid_) ke += rigid_->step(f, x, v, dt_n, dt_half, first, curve_value_, rigid_work);
-  const double gravity_work_at_n = gravity_work_;
-  const Vec3& g = model_.gravity;
-  if (g[0] != 0 || g[1] != 0 || g[2] != 0)
-    for (std::size_t i = 0; i < n; ++i)
-      gravity_work_ += dt_half * model_.mass[i] * (g[0] * v[3 * i] + g[1] * v[3 * i + 1] + g[2] * v[3 * i + 2]);
   // The constraint work of this step spans t^{n-1/2}..t^{n+1/2}; half of it belongs before t^n,
   // where the kinetic energy is evaluated (average of the half-step velocities).
   double work = rigid_work;
   for (double w : constraint_work_) work += w;
-  const double external_work_at_n = s.external_work + 0.5 * work + gravity_work_at_n;
+  // Contributors' work (gravity) is that of their last apply, i.e. up to t^n.
+  double external_work_at_n = s.external_work + 0.5 * work;
+  for (const auto& c : contributors_) external_work_at_n += c->external_work();
   s.external_work += work;
   for (std::size_t set = 0; set < set_constraints_.size(); ++set) {
     double r[3] = {0, 0, 0};
     for (int c : set_constraints_[set]) r[model_.constraints[c].dof % 3] += constraint_force_[c];
     for (int d = 0; d < 3; ++d) s.reaction[3 * set + d] = r[d];
   }
-  s.last_balance = Energies{s.time,           ke,
-                            s.internal_energy, s.hourglass_energy,
-                            s.bulk_viscous_energy, external_work_at_n,
-                            s.contact_energy,  s.friction_energy,
-                            s.rigidwall_energy};
+  record_balance(ke, external_work_at_n);
   if (!std::isfinite(ke))
     throw RunError(msg() << "non-finite kinetic energy at cycle " << s.cycle << ", time " << s.time
                          << " s: a nodal velocity became NaN or infinite (unstable run; check the time step, "
@@ -340,7 +336,26 @@ void Solver::step() {
   s.dt_prev_half = dt_half;
   ++s.cycle;
   check_after_pass(dt_half);
-  external_and_contact_forces(dt_half);
+  contributor_forces(dt_half);
+}
+
+void Solver::record_balance(double kinetic, double external_work) {
+  // Values only: the list of terms is fixed at construction, so a cycle allocates nothing.
+  State& s = state_;
+  Energies& e = s.last_balance;
+  e.time = s.time;
+  e.terms[Energies::kKinetic].value = kinetic;
+  e.terms[Energies::kInternal].value = s.internal_energy;
+  e.terms[Energies::kHourglass].value = s.hourglass_energy;
+  e.terms[Energies::kBulkViscous].value = s.bulk_viscous_energy;
+  e.terms[Energies::kExternalWork].value = external_work;
+  std::size_t t = Energies::kNumOwn;
+  for (std::size_t c = 0; c < contributors_.size(); ++c) {
+    const std::size_t k = energy_counts_[c];
+    if (k == 0) continue;
+    contributors_[c]->energies(std::span<double>(energy_scratch_.data(), k));
+    for (std::size_t i = 0; i < k; ++i) e.terms[t++].value = energy_scratch_[i];
+  }
 }
 
 void Solver::element_pass(double dt) {
@@ -441,7 +456,7 @@ void Solver::check_after_pass(double dt_used) {
 
 double Solver::energy_ratio() const {
   const Energies& e = state_.last_balance;
-  const double reference = state_.initial_total_energy + e.external_work;
+  const double reference = state_.initial_total_energy + e.external_work();
   // No initial energy and no work done: the ratio is undefined (what remains is round-off), report 1.
   if (!(reference > 0.0)) return 1.0;
   return e.total() / reference;

@@ -1,25 +1,27 @@
 // Central-difference explicit solver with lumped mass (LS-DYNA Theory Manual, "Time Integration"):
 //   v^{n+1/2} = v^{n-1/2} + dt^n f^n / m,  dt^n = (dt^{n-1/2} + dt^{n+1/2}) / 2
 //   x^{n+1}   = x^n + dt^{n+1/2} v^{n+1/2}
-//   f^{n+1}   = element pass at x^{n+1} with v^{n+1/2}; dt^{n+3/2} = TSSFAC * min_e dt_e (with contact: combined_step)
+//   f^{n+1}   = element pass at x^{n+1} with v^{n+1/2}, then the force contributors
+//   dt^{n+3/2} = TSSFAC combined_step(min_e dt_e, min over the contributors' bounds)
 // Velocity boundary conditions are imposed on v^{n+1/2}; the force they exert (reaction) and its
-// work (external work) are recorded. After the element pass, gravity, penalty contact
-// (contact/penalty_contact) and rigid walls (contact/rigid_wall) add their forces, so f^{n+1}
-// includes them; rigid bodies (solver/rigid_body) take the forces of their slaved nodes. The
-// stiffest contact spring's stable step is combined with the element step (combined_step). The solver stops with a RunError naming the element, time and
-// cause when an element inverts, a value becomes non-finite or the step collapses.
+// work (external work) are recorded. Everything else that adds nodal forces (gravity, penalty
+// contact, rigid walls, the rigid-body coupling; solver/contributors.hpp) is a ForceContributor,
+// applied in its phase after the element pass; rigid bodies (solver/rigid_body) are integrated in
+// the node update from the forces of their slaved nodes. The solver stops with a RunError naming
+// the element, time and cause when an element inverts, a value becomes non-finite or the step
+// collapses.
 #pragma once
 
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "contact/penalty_contact.hpp"
-#include "contact/rigid_wall.hpp"
-
 #include "model/model.hpp"
 #include "solver/element_update.hpp"
+#include "solver/force_contributor.hpp"
+#include "solver/penalty_contacts.hpp"
 #include "solver/rigid_body.hpp"
+#include "solver/rigid_walls.hpp"
 #include "solver/state.hpp"
 
 namespace plyimpact::solver {
@@ -37,7 +39,8 @@ class Solver {
   const model::Model& model() const { return model_; }
 
   // Energy balance at the current time t^n (kinetic energy from v^{n-1/2}, v^{n+1/2} averaged,
-  // exact at t = 0). ratio = total / (initial total + external work).
+  // exact at t = 0), the integrator's terms and the contributors'. ratio = total / (initial total
+  // + external work).
   const Energies& balance() const { return state_.last_balance; }
   double energy_ratio() const;
 
@@ -53,15 +56,23 @@ class Solver {
   // Name of the part that owns element `id` (1-based), for messages.
   std::string part_of_element(Index id) const;
 
+  // Everything the run needs to continue: the state, the integrator's own accumulators, alive masks,
+  // rigid bodies and every contributor's state. A solver built from the same model and given the
+  // state read back continues exactly as the one that wrote it.
+  void visit_state(StateVisitor& visitor);
+
   // Deletes elements (1-based ids) from the next cycle on: they no longer carry stress, their
   // energies stay in the totals (eroded), and eroding contacts rebuild their surfaces at once.
   void delete_elements(const std::vector<Index>& ids);
 
-  const std::vector<contact::PenaltyContact>& contacts() const { return contacts_; }
-  const std::vector<contact::RigidWallConstraint>& rigid_walls() const { return walls_; }
+  // The active force contributors, in the order they are applied.
+  const std::vector<std::unique_ptr<ForceContributor>>& contributors() const { return contributors_; }
+  // Views of particular contributors for output and `check` (empty when the scene has none).
+  const std::vector<contact::PenaltyContact>& contacts() const;
+  const std::vector<contact::RigidWallConstraint>& rigid_walls() const;
   const std::vector<RigidBodyState>& rigid_bodies() const;
   // Initial penetrations found at t = 0, one per contact (for `check`).
-  const std::vector<contact::InitialPenetrations>& initial_penetrations() const { return initial_penetrations_; }
+  const std::vector<contact::InitialPenetrations>& initial_penetrations() const;
   // Diagnoses found while setting up (e.g. the contact step controls the time step).
   const std::vector<std::string>& warnings() const { return warnings_; }
 
@@ -69,14 +80,18 @@ class Solver {
   void element_pass(double dt);
   void check_after_pass(double dt_used);
   void count_erosion(Index id, int cause);
+  // Alive ranges of every chunk from alive_ (after a deletion or reading a state).
+  void update_chunk_ranges();
   void mark_crashfront(const std::vector<Index>& eroded);
-  // Gravity, contact and rigid-wall forces at x^{n+1}; dt = Delta t^{n+1/2} (0 at t = 0).
-  void external_and_contact_forces(double dt);
-  // Stable step of element and contact springs together, no TSSFAC (see the definition).
-  static double combined_step(double dt_element, double dt_contact);
-  // After the contact pass: state_.dt_contact from the active springs (0 = none) and dt_next_half
-  // = TSSFAC combined_step(element step, contact step).
-  void update_contact_step();
+  // Builds the active contributors (after the initial element pass) and the balance's term list.
+  void build_contributors();
+  // The contributors' forces at x^{n+1}, phase by phase; dt = Delta t^{n+1/2} (0 at t = 0).
+  void contributor_forces(double dt);
+  // After the Forces phase: state_.dt_contact from the contributors' bounds (0 = none) and
+  // dt_next_half = TSSFAC combined_step(element step, that bound).
+  void update_step_bounds();
+  // The balance at t^n: the integrator's terms and the contributors' (values of their last apply).
+  void record_balance(double kinetic, double external_work);
 
   const model::Model& model_;
   State state_;
@@ -92,13 +107,13 @@ class Solver {
   std::vector<int> node_body_;             // (num_nodes) rigid body index, -1
   std::vector<Index> rigid_nodes_;         // nodes of the rigid bodies (their force outlives the node update)
   std::unique_ptr<RigidBodies> rigid_;     // null without rigid bodies
-  std::vector<contact::PenaltyContact> contacts_;
-  std::vector<contact::RigidWallConstraint> walls_;
-  std::vector<contact::InitialPenetrations> initial_penetrations_;
+  std::vector<std::unique_ptr<ForceContributor>> contributors_;
+  const PenaltyContacts* contacts_ = nullptr;  // views into contributors_ (null when absent)
+  const RigidWalls* walls_ = nullptr;
+  std::vector<std::size_t> energy_counts_;  // (num contributors) energies each reports
+  std::vector<double> energy_scratch_;     // (max energies of one contributor)
   std::vector<std::string> warnings_;
   double dt_element_crit_ = 0;              // s, element stable step of the last pass (no TSSFAC)
-  double dt_contact_floor_ = 0;             // s, a priori contact step when stiffer than the elements, else 0
-  double gravity_work_ = 0;                // J, work of gravity up to t^n (Σ m g . (x - x0))
   // Element deletion: alive[b][e] (empty vector = all alive) and, per chunk, its alive ranges.
   contact::AliveMask alive_;
   std::vector<std::vector<std::pair<Index, Index>>> chunk_ranges_;  // empty = whole chunk

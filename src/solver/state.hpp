@@ -7,7 +7,9 @@
 #include <limits>
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "core/types.hpp"
+#include "solver/energies.hpp"
 
 namespace plyimpact::solver {
 
@@ -29,17 +31,8 @@ struct BlockState {
   std::vector<double> history;
   std::vector<double> axes;        // (num_elements, 9) current material axes (rows a, b, c), MAT_054
   std::vector<double> initial_dt;  // (num_elements) element step at t = 0 (TFAIL ratio), MAT_054
-};
 
-// Global energy balance at one time (J). total = kinetic + internal + hourglass + bulk_viscous +
-// contact + rigid_wall (theory.md section 10.2: sliding energy with SLNTEN = 2, rigid-wall energy
-// with RWEN = 2); ratio = total / (initial total + external work), 1 for a perfect balance.
-// contact includes the friction dissipation, which is also given on its own (friction).
-struct Energies {
-  double time = 0;
-  double kinetic = 0, internal = 0, hourglass = 0, bulk_viscous = 0, external_work = 0;
-  double contact = 0, friction = 0, rigid_wall = 0;
-  double total() const { return kinetic + internal + hourglass + bulk_viscous + contact + rigid_wall; }
+  void visit_state(StateVisitor& visitor);
 };
 
 // Eroded elements of one part for one cause (ErosionCause), for history.csv and summary.json.
@@ -60,9 +53,8 @@ struct State {
   std::vector<BlockState> blocks;
   // Cumulative energies (internal/hourglass/bulk at t^n, after the last element pass).
   double internal_energy = 0, hourglass_energy = 0, bulk_viscous_energy = 0, external_work = 0;
-  double contact_energy = 0, friction_energy = 0, rigidwall_energy = 0;  // at t^n (after the last pass)
-  double dt_contact = 0;           // stable step of the stiffest contact spring (no TSSFAC); 0 = none
-  bool dt_contact_controls = false;  // the contact frequency exceeds the elements' (it dominates the step)
+  double dt_contact = 0;           // smallest stable-step bound of the force contributors (no TSSFAC); 0 = none
+  bool dt_contact_controls = false;  // a contributor's frequency exceeds the elements' (it dominates the step)
   double initial_total_energy = 0;
   Energies last_balance;           // the balance at the start of the last step (t^n)
   std::vector<double> reaction;    // (num constrained sets, 3) constraint force resultant, N
@@ -71,6 +63,9 @@ struct State {
   long eroded_elements = 0;
   double eroded_energy = 0;
   std::vector<ErosionCount> erosion;
+
+  // Every member above (the balance by its values: its terms are fixed by the model).
+  void visit_state(StateVisitor& visitor);
 };
 
 }  // namespace plyimpact::solver

@@ -8,13 +8,13 @@
 #include <iostream>
 #include <string>
 
-#include "solver/contact_energy_watch.hpp"
+#include "run/contact_energy_watch.hpp"
 
 namespace plyimpact {
 namespace {
 
 TEST(ContactEnergyWatch, WarnsWithNameFirstCrossingAndMinimum) {
-  solver::ContactEnergyWatch watch({"tup_plies", "self"});
+  run::ContactEnergyWatch watch({"tup_plies", "self"});
   const double reference = 26.8;  // J; threshold -0.268 J
   // Contact 0: +0.01, -0.2 (above the threshold), -0.3 (crosses at t = 3e-6), -0.87 (minimum at
   // 4e-6), back to -0.1. Contact 1 stays at 0.
@@ -30,7 +30,7 @@ TEST(ContactEnergyWatch, WarnsWithNameFirstCrossingAndMinimum) {
 }
 
 TEST(ContactEnergyWatch, ExactlyAtTheThresholdOrWithoutReferenceDoesNotWarn) {
-  solver::ContactEnergyWatch watch({"c"});
+  run::ContactEnergyWatch watch({"c"});
   watch.observe({-0.01 * 10.0}, 1e-6, 10.0);  // equal to -1 %: not below
   watch.observe({-5.0}, 2e-6, 0.0);            // no reference energy: nothing to compare with
   EXPECT_TRUE(watch.warnings().empty());

@@ -61,7 +61,7 @@ Outcome push(const std::string& tssfac) {
   Outcome o;
   while (solver.state().time < 150e-6) {  // reaches the +x wall after ~105 us and bounces
     solver.step();
-    o.e_min = std::min(o.e_min, solver.balance().contact);
+    o.e_min = std::min(o.e_min, solver.balance().value("contact"));
     o.ratio_err = std::max(o.ratio_err, std::abs(solver.energy_ratio() - 1));
     o.peak = std::max(o.peak, solver.contacts()[0].forces().normal);
     o.vx_min = std::min(o.vx_min, punch_vx(model, solver));

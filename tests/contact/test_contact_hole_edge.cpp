@@ -39,14 +39,14 @@ TEST(HoleEdge, NodeLiftingOffBesideAHoleIsNotCaughtByItsSideFace) {
   solver::Solver solver(model);
   ASSERT_EQ(solver.initial_penetrations()[0].count, 0u);
   solver.delete_elements({14});  // top middle element (ids: base first, x fastest; top layer 10..18)
-  const double ke0 = solver.balance().kinetic;
+  const double ke0 = solver.balance().kinetic();
   const double v0 = 10;  // m/s, impact speed: no node moves faster relative to the base (energy)
   double e_min = 0, ratio_max = 1, ratio_min = 1, release_bound = 0, normal_prev = 0;
   long contact_cycles = 0;
   std::size_t active_prev = 0;
   while (solver.state().time < 20e-6) {  // contact from 0.2 us, the bounce is over in a few us
     solver.step();
-    e_min = std::min(e_min, solver.balance().contact);
+    e_min = std::min(e_min, solver.balance().value("contact"));
     ratio_max = std::max(ratio_max, solver.energy_ratio());
     ratio_min = std::min(ratio_min, solver.energy_ratio());
     if (solver.contacts()[0].forces().active > 0) ++contact_cycles;
@@ -56,7 +56,7 @@ TEST(HoleEdge, NodeLiftingOffBesideAHoleIsNotCaughtByItsSideFace) {
     normal_prev = fc.normal;
   }
   std::cout << "hole edge: initial KE " << ke0 << " J, contact energy min " << e_min << " J, end "
-            << solver.balance().contact << " J, energy ratio " << ratio_min << " .. " << ratio_max
+            << solver.balance().value("contact") << " J, energy ratio " << ratio_min << " .. " << ratio_max
             << ", cycles in contact " << contact_cycles << "\n";
   ASSERT_GT(contact_cycles, 0);  // the punch did hit the top face
   // The contact energy is bounded below by zero up to the trapezoid's booking of a spring that
@@ -97,7 +97,7 @@ TEST(HoleEdge, SpringCaughtWithinTheCatchDepthIsBookedAtItsPotential) {
   const model::Model model = test::model_from_yaml(hole5_scene(), "hole5.yaml");
   solver::Solver solver(model);
   solver.delete_elements({14});
-  const double ke0 = solver.balance().kinetic;
+  const double ke0 = solver.balance().kinetic();
   double worst = 0, potential_max = 0, ratio_max = 1;
   while (solver.state().time < 20e-6) {
     solver.step();

@@ -24,7 +24,7 @@
 //    do not stay flat and the uniform series-spring formula is 5 % off (measured; the penalty
 //    force itself matched 2 k delta per pair exactly). Tolerance 1 %: the ramp lasts ~20 periods
 //    of the lowest mode (T ~ 1.3 us), so the residual oscillation is of order (T / T_ramp)^2.
-//    The VTU point field contact_force (solver/frame_builder) must hold +F on the upper box's
+//    The VTU point field contact_force (run/frame_builder) must hold +F on the upper box's
 //    nodes and -F on the lower box's (to round-off).
 //  - A small laminate (`laminate:` section, gmsh) hit by the mesher's rigid surface-only impactor
 //    (`impactor:` section, sphere) for a few hundred cycles: the impulse of the contact force on the
@@ -42,7 +42,7 @@
 
 #include "contact/penalty_contact.hpp"
 #include "mesh/scene_mesher.hpp"
-#include "solver/frame_builder.hpp"
+#include "run/frame_builder.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -220,7 +220,7 @@ TEST(SingleSurface, StackedBoxesPushedTogetherActAsSeriesSprings) {
   EXPECT_LT(max_err, 0.01);
   // Output: the frame's point field contact_force carries the last cycle's contact forces: +F on
   // the upper box's nodes, -F on the lower box's (F = the transmitted normal force), nothing else.
-  const output::Frame frame = solver::make_frame(solver);
+  const output::Frame frame = run::make_frame(solver);
   const output::Field* cf = nullptr;
   for (const auto& fld : frame.point_fields)
     if (fld.name == "contact_force") cf = &fld;
@@ -281,7 +281,7 @@ TEST(LaminateImpactor, RigidSurfaceImpactorOnSmallLaminate) {
   const double dv = solver.rigid_bodies()[0].v[2] - v_start;
   std::cout << "laminate + impactor: " << cycles << " cycles to " << solver.state().time << " s, peak contact force "
             << peak << " N, body dv " << dv << " m/s vs impulse / m " << impulse / m << ", contact energy "
-            << solver.balance().contact << " J, max |ratio - 1| " << max_ratio_err << "\n";
+            << solver.balance().value("contact") << " J, max |ratio - 1| " << max_ratio_err << "\n";
   EXPECT_GT(peak, 0.0);
   EXPECT_GT(dv, 0.0);  // the plate slows the body (downward velocity becomes less negative)
   EXPECT_NEAR(dv, impulse / m, 1e-9 * std::abs(v_start));

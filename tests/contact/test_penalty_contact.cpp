@@ -57,18 +57,18 @@ TEST_P(HeadOn, MomentumToRoundOffAndEnergyAccountedFor) {
     momentum(model, solver, p);
     for (int d = 0; d < 3; ++d) max_dp = std::max(max_dp, std::abs(p[d] - p0[d]));
     max_ratio_err = std::max(max_ratio_err, std::abs(solver.energy_ratio() - 1));
-    max_contact = std::max(max_contact, solver.balance().contact);
+    max_contact = std::max(max_contact, solver.balance().value("contact"));
     peak_force = std::max(peak_force, solver.contacts()[0].forces().normal);
   }
   const auto& e = solver.balance();
   std::cout << "head-on " << GetParam() << ": max |dp| / p " << max_dp / p_scale << ", max |ratio - 1| "
             << max_ratio_err << ", peak contact energy " << max_contact << " J of KE0 " << e.total()
-            << ", final contact energy " << e.contact << " J, peak normal force " << peak_force << " N, KE now "
-            << e.kinetic << "\n";
+            << ", final contact energy " << e.value("contact") << " J, peak normal force " << peak_force << " N, KE now "
+            << e.kinetic() << "\n";
   EXPECT_GT(peak_force, 0.0);
   EXPECT_LT(max_dp / p_scale, 1e-12);
   EXPECT_LT(max_ratio_err, 0.01);
-  EXPECT_LT(std::abs(e.contact), 0.05 * max_contact + 1e-12);
+  EXPECT_LT(std::abs(e.value("contact")), 0.05 * max_contact + 1e-12);
 }
 
 auto soft_name = [](const auto& info) { return "SOFT" + info.param.substr(6, 1); };
@@ -246,9 +246,9 @@ TEST(Friction, BlockSlidingOnRigidPlateDeceleratesAtMuG) {
   test::run_until(solver, t_start + T);
   const double decel = (v_start - vx()) / T;
   std::cout << "friction: deceleration " << decel << " m/s^2 (mu g " << mu * g << "), friction energy "
-            << solver.balance().friction << " J, energy ratio " << solver.energy_ratio() << "\n";
+            << solver.balance().value("friction") << " J, energy ratio " << solver.energy_ratio() << "\n";
   EXPECT_NEAR(decel, mu * g, 0.02 * mu * g);
-  EXPECT_GT(solver.balance().friction, 0.0);
+  EXPECT_GT(solver.balance().value("friction"), 0.0);
   (void)v0;
 }
 
@@ -273,7 +273,7 @@ TEST(Friction, BlockSlidingOnRigidWallDeceleratesAtMuG) {
   test::run_until(solver, T);
   const double decel = (v_start - vx()) / T;
   std::cout << "wall friction: deceleration " << decel << " m/s^2 (mu g " << mu * g << "), wall energy "
-            << solver.balance().rigid_wall << " J, energy ratio " << solver.energy_ratio() << "\n";
+            << solver.balance().value("rigid_wall") << " J, energy ratio " << solver.energy_ratio() << "\n";
   EXPECT_NEAR(decel, mu * g, 0.01 * mu * g);
 }
 

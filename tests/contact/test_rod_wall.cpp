@@ -90,7 +90,7 @@ TEST(RodOnRigidWall, ImpactTimeDurationPlateauReboundEnergy) {
   const double f_mean = sum / count;
   std::cout << "rod on wall: impact at " << t_first << " s (theory " << t0 << "), duration " << t_last - t_first
             << " s (2L/c " << duration << "), plateau " << f_mean << " N (rho c v A " << plateau << "), rebound "
-            << v_rebound << " m/s, wall energy " << solver.balance().rigid_wall / ke0
+            << v_rebound << " m/s, wall energy " << solver.balance().value("rigid_wall") / ke0
             << " of KE0, max energy error " << max_energy_error << "\n";
   EXPECT_NEAR(t_first, t0, 2 * solver.state().dt_prev_half);
   EXPECT_NEAR(t_last - t_first, duration, 0.03 * duration);
@@ -98,7 +98,7 @@ TEST(RodOnRigidWall, ImpactTimeDurationPlateauReboundEnergy) {
   EXPECT_LT(v_rebound, kV0);  // its convergence to v0 is the next test
   EXPECT_GT(v_rebound, 0.98 * kV0);
   EXPECT_LT(max_energy_error, 5e-3);
-  EXPECT_NEAR(solver.balance().rigid_wall / ke0, kH / (2 * kL), 0.5 * kH / (2 * kL));
+  EXPECT_NEAR(solver.balance().value("rigid_wall") / ke0, kH / (2 * kL), 0.5 * kH / (2 * kL));
 }
 
 // The rebound speed falls short of v0 by the energy the discrete rod leaves behind: the leading

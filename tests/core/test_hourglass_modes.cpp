@@ -75,7 +75,7 @@ TEST_P(HourglassMode, RigidMotionIsNotResistedOnSkewedElement) {
   // One step: the stress is zero at t = 0, so v^{1/2} is still the linear field. (Later steps are not
   // a test of the hourglass vectors: the small stress of a finite rotation accelerates the nodes of a
   // warped element non-linearly, which legitimately feeds the hourglass modes.)
-  const double ke = s.balance().kinetic;
+  const double ke = s.balance().kinetic();
   s.step();
   if (ihq == 1) {
     // IHQ 1 (raw base vectors) resists rotation of skewed elements (KW *HOURGLASS): documented.

@@ -69,7 +69,7 @@ TEST_P(Patch, LinearFieldGivesUniformStressAndBalancedInteriorNode) {
   if (c.ihq == 1 && c.elform == 1) {
     // IHQ 1 uses the raw base vectors: on distorted elements they are not orthogonal to a linear
     // field, so the field is resisted (documented LS-DYNA behaviour, KW *HOURGLASS).
-    EXPECT_GT(s.balance().hourglass + s.state().hourglass_energy, 0.0);
+    EXPECT_GT(s.balance().hourglass() + s.state().hourglass_energy, 0.0);
     return;
   }
   // Analytic stress: mid-step rate L = A (I + dt/2 A)^-1 (hypoelastic) or F = I + dt A (total Lagrangian).

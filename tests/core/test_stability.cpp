@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
-#include "solver/run.hpp"
+#include "run/run.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -114,9 +114,9 @@ TEST(Stability, StoppedRunKeepsOutputAndExplains) {
   const model::Model model = crushed_cube();
   const auto dir = std::filesystem::temp_directory_path() / "plyimpact_test_stability";
   std::filesystem::remove_all(dir);
-  solver::RunOptions options;
+  run::RunOptions options;
   options.output_dir = dir;
-  const solver::RunReport r = solver::run_model(model, options);
+  const run::RunReport r = run::run_model(model, options);
   EXPECT_FALSE(r.completed);
   EXPECT_NE(r.stop_reason.find("element 1"), std::string::npos) << r.stop_reason;
   EXPECT_TRUE(std::filesystem::exists(dir / "crush.pvd"));

@@ -60,7 +60,7 @@ Range run(double tssfac, int elform, bool fixed = false) {
       "cube.yaml");
   for (std::size_t n = 0; n < m.num_nodes(); ++n) m.v0[3 * n + 2] = m.X[3 * n + 2] > 0.5 * kT ? -0.5 * kV0 : 0.5 * kV0;
   solver::Solver s(m);
-  const double e0 = s.balance().kinetic, dt_first = s.state().dt_next_half;  // dt0 (closing: Q on)
+  const double e0 = s.balance().kinetic(), dt_first = s.state().dt_next_half;  // dt0 (closing: Q on)
   Range r;
   std::vector<double> v_old;
   for (int c = 0; c < kCycles; ++c) {
@@ -70,7 +70,7 @@ Range run(double tssfac, int elform, bool fixed = false) {
     const auto& b = s.balance();
     double k_shadow = 0;
     for (std::size_t i = 0; i < v_old.size(); ++i) k_shadow += 0.5 * m.mass[i / 3] * v_old[i] * s.state().v[i];
-    const double e = (k_shadow + b.internal + b.hourglass + b.bulk_viscous) / e0;
+    const double e = (k_shadow + b.internal() + b.hourglass() + b.bulk_viscous()) / e0;
     if (c > 0) r.lo = std::min(r.lo, e), r.hi = std::max(r.hi, e);  // cycle 0: v_old is v^0, not v^{-1/2}
   }
   return r;

@@ -12,7 +12,7 @@
 #include "../core/support.hpp"
 #include "material/composite_damage_output.hpp"
 #include "material/plasticity.hpp"
-#include "solver/frame_material_fields.hpp"
+#include "run/frame_material_fields.hpp"
 
 namespace plyimpact {
 namespace {
@@ -63,7 +63,7 @@ TEST_P(ErosionSolver, Mat054ElementFailsAtXTAndIsEroded) {
       int(solver::ErosionCause::CompositeBase) + int(material::CompositeDamageCause::FibreTension)));
   // The output marks the element as eroded and carries the damage fields (fibre-tension flag 0).
   output::Frame frame;
-  solver::add_material_fields(s, frame);
+  run::add_material_fields(s, frame);
   ASSERT_EQ(frame.cell_int_fields.size(), 1u);
   EXPECT_EQ(frame.cell_int_fields[0].name, "alive");
   EXPECT_EQ(frame.cell_int_fields[0].values[0], 0);
@@ -101,7 +101,7 @@ TEST_P(ErosionSolver, Mat003ElementFollowsBilinearLaw) {
   }
   // The output reports the mean plastic strain of the points.
   output::Frame frame;
-  solver::add_material_fields(s, frame);
+  run::add_material_fields(s, frame);
   ASSERT_EQ(frame.cell_fields.size(), 1u);
   EXPECT_EQ(frame.cell_fields[0].name, "plastic_strain");
   EXPECT_NEAR(frame.cell_fields[0].values[0], s.state().blocks[0].history[0], 1e-9);
@@ -118,7 +118,7 @@ TEST_P(ErosionSolver, BarPulledApartKeepsEnergyBalance) {
   solver::Solver s(model);
   test::run_until(s, 2.0e-4);
   std::cout << "bar: " << s.state().eroded_elements << " eroded, eroded energy " << s.state().eroded_energy
-            << " J, energy ratio " << s.energy_ratio() << ", external work " << s.balance().external_work << " J\n";
+            << " J, energy ratio " << s.energy_ratio() << ", external work " << s.balance().external_work() << " J\n";
   EXPECT_GE(s.state().eroded_elements, 1);
   EXPECT_GT(s.state().eroded_energy, 0.0);
   EXPECT_NEAR(s.energy_ratio(), 1.0, 0.01);

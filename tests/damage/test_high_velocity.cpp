@@ -13,7 +13,7 @@
 #include "config/scene_loader.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
-#include "solver/run.hpp"
+#include "run/run.hpp"
 
 namespace plyimpact {
 namespace {
@@ -23,9 +23,9 @@ TEST(HighVelocity, SteelSphereThroughCompositePlateIsStable) {
   const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
   const auto dir = std::filesystem::temp_directory_path() / "plyimpact_high_velocity";
   std::filesystem::remove_all(dir);
-  solver::RunOptions options;
+  run::RunOptions options;
   options.output_dir = dir;
-  const solver::RunReport r = solver::run_model(model, options);
+  const run::RunReport r = run::run_model(model, options);
   ASSERT_TRUE(r.completed) << r.stop_reason;
   EXPECT_NEAR(r.energy_ratio, 1.0, 0.02);
   std::ifstream in(dir / "summary.json");

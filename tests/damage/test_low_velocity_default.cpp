@@ -26,7 +26,7 @@
 #include "config/scene_loader.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
-#include "solver/run.hpp"
+#include "run/run.hpp"
 
 namespace plyimpact {
 namespace {
@@ -65,9 +65,9 @@ TEST(LowVelocityDefault, FreeFlightFirstContactAndEnergyBalance) {
 
   const auto dir = std::filesystem::temp_directory_path() / "plyimpact_low_velocity_default";
   std::filesystem::remove_all(dir);
-  solver::RunOptions options;
+  run::RunOptions options;
   options.output_dir = dir;
-  const solver::RunReport r = solver::run_model(model, options);
+  const run::RunReport r = run::run_model(model, options);
   ASSERT_TRUE(r.completed) << r.stop_reason;
   auto h = read_history(r.history);
   const auto& t = h["time"];

@@ -203,7 +203,7 @@ TaylorResult run_taylor(int n, int k, int nz, int elform, double t_end) {
   const mesh::Mesh mesh = quarter_cylinder(n, k, nz);
   const model::Model model = model::build_model(scene, mesh);
   solver::Solver s(model);
-  const double ke0 = s.balance().kinetic;
+  const double ke0 = s.balance().kinetic();
   const auto t0 = std::chrono::steady_clock::now();
   test::run_until(s, t_end);
   TaylorResult r;
@@ -211,7 +211,7 @@ TaylorResult run_taylor(int n, int k, int nz, int elform, double t_end) {
   r.elements = long(mesh.num_elements());
   r.cycles = s.state().cycle;
   r.energy_ratio = s.energy_ratio();
-  r.kinetic_fraction = s.balance().kinetic / ke0;
+  r.kinetic_fraction = s.balance().kinetic() / ke0;
   // Final length: rear-face centre minus impact-face centre (both on the axis, node 0 of their
   // layer); face radius: the largest radius of the nodes of the original impact face.
   const std::size_t layer = mesh.num_nodes() / std::size_t(nz + 1);

@@ -39,7 +39,7 @@
 #include "frame_reader.hpp"
 #include "output/vtu_writer.hpp"
 #include "scratch_dir.hpp"
-#include "solver/frame_builder.hpp"
+#include "run/frame_builder.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -84,7 +84,7 @@ TEST_P(FrameFields, WrittenFieldsOfAPulledFortyFiveDegreePlyMatchHandValues) {
   solver::Solver s(model);
   test::run_until(s, kEnd);
   test::ScratchDir dir;
-  output::write_vtu(solver::make_frame(s), dir.path() / "frame.vtu");
+  output::write_vtu(run::make_frame(s), dir.path() / "frame.vtu");
   const test::ReadFrame f = test::read_vtu(dir.path() / "frame.vtu");
   ASSERT_EQ(f.num_points(), 8u);
   ASSERT_EQ(f.grid->GetNumberOfCells(), 1);

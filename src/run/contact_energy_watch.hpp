@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace plyimpact::solver {
+namespace plyimpact::run {
 
 class ContactEnergyWatch {
  public:
@@ -37,4 +37,4 @@ class ContactEnergyWatch {
   std::vector<Entry> entries_;
 };
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::run

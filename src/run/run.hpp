@@ -1,4 +1,6 @@
-// Runs a built model to its termination time and writes the results into one directory:
+// Runs a built model to its termination time. The time loop (run_loop) only steps the solver and
+// hands it to observers (run/run_observer.hpp); run_model adds the standard ones, which write the
+// results into one directory:
 //   <scene>.pvd + <scene>_NNNN.vtu (frames), history.csv (energies, dt, reactions), summary.json.
 // Every file is written atomically and rewritten as the run goes, so a run that stops early keeps
 // everything written so far and summary.json says why it stopped.
@@ -10,8 +12,9 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "run/run_observer.hpp"
 
-namespace plyimpact::solver {
+namespace plyimpact::run {
 
 struct RunOptions {
   std::filesystem::path output_dir;
@@ -19,18 +22,11 @@ struct RunOptions {
   bool progress_in_place = false;    // true on a terminal: one line updated with '\r'
 };
 
-struct RunReport {
-  bool completed = false;
-  std::string stop_reason;       // empty when completed
-  long cycles = 0;
-  double end_time = 0;
-  double wall_seconds = 0;          // whole run including output
-  double ns_per_element_cycle = 0;  // solver cycles only
-  double energy_ratio = 1;
-  std::vector<std::string> warnings;
-  std::filesystem::path pvd, history, summary;
-};
+// Builds the solver and steps it to the termination time (or control.max_cycles), calling the
+// observers in order. A RunError ends the run: the report says why, and stop is still called.
+RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& observers);
 
+// run_loop with frames, history, progress, the checks and the summary.
 RunReport run_model(const model::Model& model, const RunOptions& options);
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::run

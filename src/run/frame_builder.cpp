@@ -1,13 +1,15 @@
-#include "solver/frame_builder.hpp"
+#include "run/frame_builder.hpp"
 
-#include "solver/frame_material_fields.hpp"
+#include "run/frame_material_fields.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
 
 #include "element/hex8.hpp"
 
-namespace plyimpact::solver {
+namespace plyimpact::run {
+
+using namespace solver;  // the frame reads the solver's state types throughout
 
 namespace {
 
@@ -133,4 +135,4 @@ output::Frame make_frame(const Solver& solver) {
   return frame;
 }
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::run

@@ -9,8 +9,8 @@
 #include "output/frame.hpp"
 #include "solver/solver.hpp"
 
-namespace plyimpact::solver {
+namespace plyimpact::run {
 
-output::Frame make_frame(const Solver& solver);
+output::Frame make_frame(const solver::Solver& solver);
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::run

@@ -1,4 +1,4 @@
-#include "solver/frame_material_fields.hpp"
+#include "run/frame_material_fields.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -7,7 +7,9 @@
 #include "material/composite_damage_output.hpp"
 #include "material/plasticity.hpp"
 
-namespace plyimpact::solver {
+namespace plyimpact::run {
+
+using namespace solver;  // the frame reads the solver's state types throughout
 
 void add_material_fields(const Solver& solver, output::Frame& frame) {
   const model::Model& model = solver.model();
@@ -65,4 +67,4 @@ void add_material_fields(const Solver& solver, output::Frame& frame) {
   for (auto& f : damage) frame.cell_fields.push_back(std::move(f));
 }
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::run

@@ -1,8 +1,8 @@
-#include "solver/contact_energy_watch.hpp"
+#include "run/contact_energy_watch.hpp"
 
 #include <cstdio>
 
-namespace plyimpact::solver {
+namespace plyimpact::run {
 
 ContactEnergyWatch::ContactEnergyWatch(std::vector<std::string> names) {
   for (auto& n : names) entries_.push_back(Entry{std::move(n)});
@@ -38,4 +38,4 @@ std::vector<std::string> ContactEnergyWatch::warnings() const {
   return out;
 }
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::run

@@ -7,9 +7,9 @@
 #include "output/frame.hpp"
 #include "solver/solver.hpp"
 
-namespace plyimpact::solver {
+namespace plyimpact::run {
 
 // Appends the fields; cells are in the frame's order (blocks in order, elements in block order).
-void add_material_fields(const Solver& solver, output::Frame& frame);
+void add_material_fields(const solver::Solver& solver, output::Frame& frame);
 
-}  // namespace plyimpact::solver
+}  // namespace plyimpact::run

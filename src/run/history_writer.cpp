@@ -1,0 +1,92 @@
+#include "run/history_writer.hpp"
+
+namespace plyimpact::run {
+
+namespace {
+
+// Columns: time and step, the integrator's energies, total and ratio, the controlling element, the
+// reactions, then each force contributor's energies and own columns, then erosion. Energies come
+// from the balance's named list (solver/energies.hpp), so a new energy is named in one place.
+std::vector<std::string> history_columns(const model::Model& model, const solver::Solver* solver) {
+  const solver::Energies own;
+  std::vector<std::string> cols = {"time", "dt"};
+  for (const auto& t : own.terms) cols.push_back(t.column);
+  for (const char* c : {"total_energy", "energy_ratio", "dt_element"}) cols.push_back(c);
+  for (int set : model.constrained_sets)
+    for (const char* c : {"_fx", "_fy", "_fz"}) cols.push_back("reaction_" + model.node_sets[set].name + c);
+  if (solver) {
+    const auto& terms = solver->balance().terms;
+    for (std::size_t c = 0; c < solver->contributors().size(); ++c) {
+      for (const auto& t : terms)
+        if (t.owner == int(c)) cols.push_back(t.column);
+      for (auto& col : solver->contributors()[c]->history_columns()) cols.push_back(std::move(col));
+    }
+  }
+  if (can_erode(model)) {
+    cols.push_back("eroded_elements");
+    cols.push_back("eroded_energy");
+  }
+  return cols;
+}
+
+}  // namespace
+
+bool can_erode(const model::Model& model) {
+  if (model.control.erode_tsmin > 0) return true;
+  for (const auto& m : model.materials)
+    if (m.kind == model::MaterialKind::CompositeDamage ||
+        (m.kind == model::MaterialKind::Plastic && m.plastic.failure_strain > 0))
+      return true;
+  return false;
+}
+
+HistoryWriter::HistoryWriter(const model::Model& model, std::filesystem::path file, double interval,
+                             double flush_interval)
+    : model_(model),
+      file_(std::move(file)),
+      t_end_(model.control.termination_time),
+      rows_(interval),
+      flushes_(flush_interval) {}
+
+void HistoryWriter::add_row(const solver::Solver& solver) {
+  const solver::State& s = solver.state();
+  const solver::Energies& e = solver.balance();
+  row_.assign({e.time, s.dt_prev_half});
+  for (const auto& t : e.terms)
+    if (t.owner < 0) row_.push_back(t.value);
+  row_.insert(row_.end(), {e.total(), solver.energy_ratio(), double(s.dt_element)});
+  row_.insert(row_.end(), s.reaction.begin(), s.reaction.end());
+  for (std::size_t c = 0; c < solver.contributors().size(); ++c) {
+    for (const auto& t : e.terms)
+      if (t.owner == int(c)) row_.push_back(t.value);
+    solver.contributors()[c]->history_values(row_);
+  }
+  if (can_erode(solver.model())) row_.insert(row_.end(), {double(s.eroded_elements), s.eroded_energy});
+  table_->add_row(row_);
+}
+
+void HistoryWriter::start(const solver::Solver& solver) {
+  table_.emplace(history_columns(model_, &solver));
+  add_row(solver);
+  table_->write_csv(file_);
+}
+
+void HistoryWriter::after_cycle(const solver::Solver& solver) {
+  const double t = solver.state().time;
+  if (rows_.due(t) && solver.balance().time > 0) {
+    add_row(solver);
+    rows_.advance(t);
+  }
+  if (flushes_.due(t) || t >= t_end_ * (1 - 1e-12)) {
+    table_->write_csv(file_);
+    if (flushes_.due(t)) flushes_.advance(t);
+  }
+}
+
+void HistoryWriter::stop(const solver::Solver* solver, RunReport& report) {
+  if (!table_) table_.emplace(history_columns(model_, solver));  // the solver could not be built
+  table_->write_csv(file_);
+  report.history = file_;
+}
+
+}  // namespace plyimpact::run

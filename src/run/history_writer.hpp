@@ -1,0 +1,39 @@
+// history.csv: one row per history interval (energies, step, reactions, contact, wall and rigid-body
+// columns, erosion), rewritten atomically at every frame and at the end, so a run that stops early
+// keeps its history.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "output/history_table.hpp"
+#include "run/run_observer.hpp"
+
+namespace plyimpact::run {
+
+// Erosion columns only when something can erode (a material with failure, or erode_tsmin).
+bool can_erode(const model::Model& model);
+
+class HistoryWriter : public RunObserver {
+ public:
+  // Rows every `interval` s; the file is rewritten every `flush_interval` s and on the last cycle.
+  HistoryWriter(const model::Model& model, std::filesystem::path file, double interval, double flush_interval);
+
+  void start(const solver::Solver& solver) override;
+  void after_cycle(const solver::Solver& solver) override;
+  void stop(const solver::Solver* solver, RunReport& report) override;
+
+ private:
+  void add_row(const solver::Solver& solver);
+
+  const model::Model& model_;
+  std::filesystem::path file_;
+  double t_end_;
+  std::optional<output::HistoryTable> table_;  // columns known once the solver is built
+  std::vector<double> row_;
+  Sampler rows_, flushes_;
+};
+
+}  // namespace plyimpact::run

@@ -1,0 +1,87 @@
+#include "run/run.hpp"
+
+#include <omp.h>
+
+#include <chrono>
+#include <memory>
+
+#include "core/error.hpp"
+#include "run/frame_writer.hpp"
+#include "run/history_writer.hpp"
+#include "run/progress_line.hpp"
+#include "run/run_checks.hpp"
+#include "run/summary_writer.hpp"
+#include "solver/solver.hpp"
+
+namespace plyimpact::run {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+}  // namespace
+
+RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& observers) {
+  if (model.control.threads > 0) omp_set_num_threads(model.control.threads);
+  RunReport report;
+  const double t_end = model.control.termination_time;
+  double solver_seconds = 0;
+  long solver_cycles = 0;
+  std::unique_ptr<solver::Solver> solver;
+  try {
+    solver = std::make_unique<solver::Solver>(model);
+    for (const auto& w : solver->warnings()) report.warnings.push_back(w);
+    for (RunObserver* o : observers) o->start(*solver);
+    const long max_cycles = model.control.max_cycles;
+    while (solver->state().time < t_end * (1 - 1e-12) && (max_cycles <= 0 || solver->state().cycle < max_cycles)) {
+      solver::State& s = solver->state();
+      if (s.time + s.dt_next_half > t_end) s.dt_next_half = t_end - s.time;  // land on the end time
+      const auto t0 = Clock::now();
+      solver->step();
+      solver_seconds += seconds_since(t0);
+      ++solver_cycles;
+      for (RunObserver* o : observers) o->after_cycle(*solver);
+    }
+    report.completed = solver->state().time >= t_end * (1 - 1e-12);
+    if (!report.completed) report.stop_reason = "max_cycles reached before the termination time";
+  } catch (const RunError& e) {
+    report.completed = false;
+    report.stop_reason = e.what();
+  }
+  if (solver) {
+    report.cycles = solver->state().cycle;
+    report.end_time = solver->state().time;
+    report.energy_ratio = solver->energy_ratio();
+  }
+  const double element_cycles = double(model.num_elements()) * double(solver_cycles);
+  report.ns_per_element_cycle = element_cycles > 0 ? 1e9 * solver_seconds / element_cycles : 0.0;
+  for (RunObserver* o : observers) o->stop(solver.get(), report);
+  return report;
+}
+
+RunReport run_model(const model::Model& model, const RunOptions& options) {
+  const auto t_start = Clock::now();
+  std::filesystem::create_directories(options.output_dir);
+  const double t_end = model.control.termination_time;
+  const double frame_interval = model.output.interval > 0 ? model.output.interval : t_end / 20;
+  const double history_interval = model.output.history_interval > 0 ? model.output.history_interval : t_end / 1000;
+
+  HistoryWriter history(model, options.output_dir / "history.csv", history_interval, frame_interval);
+  FrameWriter frames(model, options.output_dir, frame_interval);
+  HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
+  ContactEnergyCheck contact_energy(model);
+  EnergyRatioCheck energy_ratio;
+  SummaryWriter summary(model, options.output_dir / "summary.json", t_start);
+  std::unique_ptr<ProgressLine> progress;
+  if (options.progress) progress = std::make_unique<ProgressLine>(*options.progress, options.progress_in_place, t_end, t_start);
+
+  // Stop order is the order of the warnings in summary.json; the summary comes last.
+  std::vector<RunObserver*> observers = {&frames, &history};
+  if (progress) observers.push_back(progress.get());
+  for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &energy_ratio, &summary})
+    observers.push_back(o);
+  RunReport report = run_loop(model, observers);
+  report.wall_seconds = seconds_since(t_start);
+  return report;
+}
+
+}  // namespace plyimpact::run

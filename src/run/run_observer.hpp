@@ -1,0 +1,55 @@
+// The run loop hands the solver to observers: everything that watches a run without changing its
+// physics (frames, history, summary, progress line, energy and hourglass checks; restart dumps and
+// a study runner later) is one. The loop calls start once the solver is built (the state at
+// t = 0), after_cycle after every cycle, and stop once, also when the run stopped with an error
+// (then `solver` may be null: it could not be built). Observers see the solver read-only.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "solver/solver.hpp"
+
+namespace plyimpact::run {
+
+struct RunReport {
+  bool completed = false;
+  std::string stop_reason;       // empty when completed
+  long cycles = 0;
+  double end_time = 0;
+  double wall_seconds = 0;          // whole run including output
+  double ns_per_element_cycle = 0;  // solver cycles only
+  double energy_ratio = 1;
+  std::vector<std::string> warnings;
+  std::filesystem::path pvd, history, summary;
+};
+
+class RunObserver {
+ public:
+  virtual ~RunObserver() = default;
+  virtual void start(const solver::Solver& solver) { (void)solver; }
+  virtual void after_cycle(const solver::Solver& solver) { (void)solver; }
+  // In the order the observers were registered: a later one sees the warnings of earlier ones.
+  virtual void stop(const solver::Solver* solver, RunReport& report) {
+    (void)solver;
+    (void)report;
+  }
+};
+
+// Fires at t = interval, 2 interval, ...; a cycle that jumps over several marks fires once and
+// the next mark is the first one after t. The relative slack 1e-12 absorbs the round-off of the
+// summed time steps.
+class Sampler {
+ public:
+  explicit Sampler(double interval) : interval_(interval), next_(interval) {}
+  bool due(double t) const { return t >= next_ * (1 - 1e-12); }
+  void advance(double t) { next_ += interval_ * std::max(1.0, std::floor((t - next_) / interval_) + 1); }
+
+ private:
+  double interval_, next_;
+};
+
+}  // namespace plyimpact::run

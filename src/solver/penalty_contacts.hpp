@@ -1,0 +1,47 @@
+// The scene's penalty contacts (contact/penalty_contact) as one force contributor: built after the
+// initial element pass (their SOFT 1/2 stiffness needs the initial step), initial penetrations
+// resolved at once, forces in the Forces phase. The stable-step bound is the Gershgorin step of the
+// springs active in the last pass, floored by the a priori step of the stiffest possible spring
+// when that is below the element step (so a first contact cannot drive a node a whole element
+// step deep into a stiff spring). Energies: contact (SLNTEN = 2, friction and damping included)
+// and, shown on its own, friction.
+#pragma once
+
+#include "contact/penalty_contact.hpp"
+#include "solver/force_contributor.hpp"
+
+namespace plyimpact::solver {
+
+class PenaltyContacts : public ForceContributor {
+ public:
+  static model::Subsystem describe(const model::Model& model);
+  // x: positions at t = 0 (initial penetrations may move nodes onto the surface); dt_initial: the
+  // initial solution step (TSSFAC applied); dt_element: the elements' stable step (no TSSFAC).
+  PenaltyContacts(const model::Model& model, std::vector<double>& x, double dt_initial, double dt_element);
+
+  std::string name() const override { return "contact"; }
+  void apply(const ForceContext& context) override;
+  std::vector<EnergyName> energy_names() const override {
+    return {{"contact", "contact_energy", true}, {"friction", "friction_energy", false}};
+  }
+  void energies(std::span<double> out) const override;
+  double stable_step() const override;
+  std::vector<std::string> warnings() const override { return warnings_; }
+  void on_erosion(const AliveMask& alive, const std::vector<double>& x) override;
+  void node_forces(std::vector<NodeForces>& out) const override;
+  std::vector<std::string> history_columns() const override;
+  void history_values(std::vector<double>& row) const override;
+  void visit_state(StateVisitor& visitor) override;
+
+  const std::vector<contact::PenaltyContact>& contacts() const { return contacts_; }
+  const std::vector<contact::InitialPenetrations>& initial_penetrations() const { return initial_penetrations_; }
+
+ private:
+  std::vector<contact::PenaltyContact> contacts_;
+  std::vector<contact::InitialPenetrations> initial_penetrations_;
+  std::vector<std::string> warnings_;
+  double dt_floor_ = 0;             // s, a priori step when stiffer than the elements, else 0
+  double energy_ = 0, friction_ = 0;  // J, sums over the contacts at the last apply
+};
+
+}  // namespace plyimpact::solver
