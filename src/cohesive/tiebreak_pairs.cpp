@@ -86,6 +86,7 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
   damage_.assign(n, 0.0);
   slip1_.assign(n, 0.0);
   slip2_.assign(n, 0.0);
+  stick_energy_.assign(n, 0.0);
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   chunk_elastic_.assign(chunks, 0.0);
   chunk_dissipated_.assign(chunks, 0.0);
@@ -187,13 +188,14 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
         const Frame fr = frame(p);
         double u[3];
         local_opening(x, p, fr, u);
-        PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p]};
+        PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
         PointResponse r;
         traction_update(law_, u, h, r);
         max_opening_[p] = h.max_opening;
         damage_[p] = h.damage;
         slip1_[p] = h.slip1;
         slip2_[p] = h.slip2;
+        stick_energy_[p] = h.stick_energy;
         const auto& c = pairs_[p];
         const double* t = r.traction;
         for (int i = 0; i < 3; ++i) {
@@ -242,7 +244,7 @@ void TiebreakPairs::sample(const double* x, PairSample* out) const {
     const Frame fr = frame(p);
     PairSample& s = out[p];
     local_opening(x, p, fr, s.opening);
-    PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p]};
+    PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
     PointResponse r;
     traction_update(law_, s.opening, h, r);
     s.damage = r.damage;
@@ -257,6 +259,7 @@ void TiebreakPairs::visit_state(StateVisitor& visitor) {
   visitor.array("damage", damage_);
   visitor.array("slip_1", slip1_);
   visitor.array("slip_2", slip2_);
+  visitor.array("stick_energy", stick_energy_);
   visitor.scalar("dissipated_energy", dissipated_energy_);
 }
 

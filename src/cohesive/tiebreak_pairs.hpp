@@ -73,7 +73,8 @@ class TiebreakPairs {
   // Per-pair output for configuration x into out[0 .. size()).
   void sample(const double* x, PairSample* out) const;
 
-  // Names the per-pair history (max_opening, damage, slip_1, slip_2) and the dissipated energy.
+  // Names the per-pair history (max_opening, damage, slip_1, slip_2, stick_energy) and the
+  // dissipated energy.
   void visit_state(StateVisitor& visitor);
 
  private:
@@ -102,7 +103,7 @@ class TiebreakPairs {
   bool nodes_distinct_ = true;
 
   // History, (num_pairs) each: see PointHistory.
-  std::vector<double> max_opening_, damage_, slip1_, slip2_;
+  std::vector<double> max_opening_, damage_, slip1_, slip2_, stick_energy_;
   double dissipated_energy_ = 0;
 
   std::vector<double> chunk_elastic_, chunk_dissipated_, chunk_separated_;  // (num_chunks) scratch

@@ -1,6 +1,6 @@
 // Interface traction-separation laws as pure point functions: (law, opening in the interface frame,
 // history) -> (traction, new history, damage, mode mixity, energies, secant stiffnesses). The history
-// is four plain doubles, so a run can be written and read back. One law serves the tiebreak pairs and
+// is five plain doubles, so a run can be written and read back. One law serves the tiebreak pairs and
 // (later) the *MAT_138 cohesive element. Units SI; opening and traction are (normal, shear 1, shear 2),
 // the normal positive in opening.
 //
@@ -32,7 +32,9 @@
 //          found; docs/delamination.md lists what is and is not known.
 // After complete separation (d = 1): contact only. No tension; compression by the penalty K_n;
 // Coulomb friction through an elastic stick spring K_t with a return map onto mu |t_n| (the slip
-// point is the history). Opening again releases the stick spring (its energy counts as dissipated).
+// point is the history; the friction dissipates mu |t_n| |slip increment|, the work of a sliding
+// traction, exact in steady sliding). Opening again releases the stick spring (its energy counts as
+// dissipated).
 // Energies per unit area: elastic = the stored (1 - d) secant energy plus the compression and stick
 // springs. Dissipated increment = integral of Y dd with Y = 1/2 (K_n delta_I^2 + K_t delta_II^2),
 // evaluated as 1/2 K_eff delta_lo delta_hi (d_new - d_old) with delta_lo = max(delta_m, delta_0) and
@@ -69,6 +71,7 @@ struct PointHistory {
   double damage = 0;       // d in [0, 1]; 1 = separated (contact only)
   double slip1 = 0;        // m, stick-spring anchor of the friction after separation (shear 1, shear 2)
   double slip2 = 0;
+  double stick_energy = 0; // J/m^2 held by the stick spring after the last update (released on opening)
 };
 
 struct PointResponse {
@@ -138,7 +141,8 @@ inline void separated_contact(const TractionLaw& law, const double u[3], PointHi
   const double trial_sq = law.kt * law.kt * (e1 * e1 + e2 * e2);  // |t_trial|^2
   r.damage = 1;
   if (u[0] >= 0) {  // open: nothing carried; a loaded stick spring lets go
-    r.dissipated_increment += 0.5 * trial_sq / law.kt;
+    r.dissipated_increment += h.stick_energy;
+    h.stick_energy = 0;
     h.slip1 = u[1];
     h.slip2 = u[2];
     r.traction[0] = r.traction[1] = r.traction[2] = 0;
@@ -155,12 +159,13 @@ inline void separated_contact(const TractionLaw& law, const double u[3], PointHi
     t2 *= scale;
     h.slip1 = u[1] - t1 / law.kt;
     h.slip2 = u[2] - t2 / law.kt;
-    r.dissipated_increment += 0.5 * (trial_sq - limit * limit) / law.kt;
+    r.dissipated_increment += limit * (std::sqrt(trial_sq) - limit) / law.kt;  // mu |t_n| |slip increment|
   }
   r.traction[0] = tn;
   r.traction[1] = t1;
   r.traction[2] = t2;
-  r.elastic_energy = 0.5 * (tn * u[0] + (t1 * t1 + t2 * t2) / law.kt);
+  h.stick_energy = 0.5 * (t1 * t1 + t2 * t2) / law.kt;
+  r.elastic_energy = 0.5 * tn * u[0] + h.stick_energy;
   r.stiffness_normal = law.kn;
   r.stiffness_shear = law.kt;
 }
