@@ -32,8 +32,8 @@
 //          found; docs/delamination.md lists what is and is not known.
 // After complete separation (d = 1): contact only. No tension; compression by the penalty K_n;
 // Coulomb friction through an elastic stick spring K_t with a return map onto mu |t_n| (the slip
-// point is the history; the friction dissipates mu |t_n| |slip increment|, the work of a sliding
-// traction, exact in steady sliding). Opening again releases the stick spring (its energy counts as
+// point is the history; the friction dissipates the mean sliding traction times the slip increment,
+// so that with the stick spring's energy it equals the trapezoid work of the traction). Opening again releases the stick spring (its energy counts as
 // dissipated).
 // Energies per unit area: elastic = the stored (1 - d) secant energy plus the compression and stick
 // springs. Dissipated increment = integral of Y dd with Y = 1/2 (K_n delta_I^2 + K_t delta_II^2),
@@ -159,7 +159,10 @@ inline void separated_contact(const TractionLaw& law, const double u[3], PointHi
     t2 *= scale;
     h.slip1 = u[1] - t1 / law.kt;
     h.slip2 = u[2] - t2 / law.kt;
-    r.dissipated_increment += limit * (std::sqrt(trial_sq) - limit) / law.kt;  // mu |t_n| |slip increment|
+    // Work of the sliding traction over the slip, its mean over the step (|t| was
+    // sqrt(2 K_t E_stick) before): with the stick energy's change this is the trapezoid work.
+    const double t_before = std::sqrt(2 * law.kt * h.stick_energy);
+    r.dissipated_increment += 0.5 * (t_before + limit) * (std::sqrt(trial_sq) - limit) / law.kt;
   }
   r.traction[0] = tn;
   r.traction[1] = t1;

@@ -254,9 +254,10 @@ TEST(MixedModeLaw, SeparatedPointIsContactWithCoulombFriction) {
   const double kt = p.CT2CN * p.CN;
   const double stick = limit / kt;       // shear opening at which sliding starts
   const double slide_to = 50 * stick;
-  const double slid[3] = {gap, slide_to, 0};
+  const double at_stick[3] = {gap, stick, 0}, slid[3] = {gap, slide_to, 0};
   const std::size_t start = path.size();
-  test::drive(law, h, closed, slid, 1000, path);
+  test::drive(law, h, closed, at_stick, 20, path);  // the stick-slip kink is a path point
+  test::drive(law, h, at_stick, slid, 1000, path);
   double friction = 0;
   for (std::size_t i = start; i < path.size(); ++i) {
     const auto& pt = path[i];

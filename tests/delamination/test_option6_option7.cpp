@@ -153,13 +153,15 @@ TEST(Option7, FrictionAngleGivesCoulombCoefficientAfterSeparation) {
     traction_update(law, open, h, r);
     ASSERT_EQ(r.damage, 1.0);
     const double gap = -2e-6;
-    const double sliding[3] = {gap, 5e-4, 0};
-    traction_update(law, sliding, h, r);
     const double mu = std::tan(angle * std::numbers::pi / 180);
+    const double stick = mu * std::abs(gap);  // stick spring K_t = CN: sliding starts at mu |gap|
+    const double at_stick[3] = {gap, stick, 0}, sliding[3] = {gap, 5e-4, 0};
+    traction_update(law, at_stick, h, r);
+    EXPECT_NEAR(r.traction[1], mu * p.CN * std::abs(gap), 1e-9 * p.CN * std::abs(gap));
+    traction_update(law, sliding, h, r);
     EXPECT_NEAR(r.traction[1], mu * p.CN * std::abs(gap), 1e-9 * p.CN * std::abs(gap));
     // Sliding dissipates mu |t_n| per unit slip.
-    const double slip = 5e-4 - mu * std::abs(gap);  // stick spring K_t = CN: elongation mu |gap|
-    EXPECT_NEAR(r.dissipated_increment, mu * p.CN * std::abs(gap) * slip, 1e-9 * p.CN * std::abs(gap) * 5e-4);
+    EXPECT_NEAR(r.dissipated_increment, mu * p.CN * std::abs(gap) * (5e-4 - stick), 1e-9 * p.CN * std::abs(gap) * 5e-4);
   }
 }
 
