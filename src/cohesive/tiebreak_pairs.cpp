@@ -32,6 +32,64 @@ void perpendicular(const double n[3], double t[3]) {
 
 }  // namespace
 
+// Vector areas 1/2 (d_02 x d_13) of faces [begin, end) on the current mid-surface.
+void TiebreakPairs::compute_face_vectors(const double* x, std::size_t begin, std::size_t end) {
+  for (std::size_t f = begin; f < end; ++f) {
+    const Index* q = &faces_[4 * f];
+    double m[4][3];
+    for (int k = 0; k < 4; ++k) {
+      const auto& c = pairs_[q[k]];
+      for (int i = 0; i < 3; ++i) m[k][i] = 0.5 * (x[3 * c.lower + i] + x[3 * c.upper + i]);
+    }
+    const double d1[3] = {m[2][0] - m[0][0], m[2][1] - m[0][1], m[2][2] - m[0][2]};
+    const double d2[3] = {m[3][0] - m[1][0], m[3][1] - m[1][1], m[3][2] - m[1][2]};
+    double* a = &face_vector_[3 * f];
+    cross(d1, d2, a);
+    for (int i = 0; i < 3; ++i) a[i] *= 0.5;
+  }
+}
+
+// Unit normals of pairs [begin, end) from the face vector areas around each (current face_vector_).
+void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
+  for (std::size_t p = begin; p < end; ++p) {
+    double n[3] = {0, 0, 0};
+    for (Index k = pair_face_offset_[p]; k < pair_face_offset_[p + 1]; ++k) {
+      const double* a = &face_vector_[3 * pair_face_[k]];
+      for (int i = 0; i < 3; ++i) n[i] += a[i];
+    }
+    const double inv = 1 / std::sqrt(dot(n, n));
+    for (int i = 0; i < 3; ++i) normals_[3 * p + i] = n[i] * inv;
+  }
+}
+
+[[gnu::always_inline]] inline TiebreakPairs::Frame TiebreakPairs::frame(std::size_t p) const {
+  Frame fr;
+  for (int i = 0; i < 3; ++i) fr.n[i] = normals_[3 * p + i];
+  const double* t = pairs_[p].t1_ref;
+  const double tn = dot(t, fr.n);
+  for (int i = 0; i < 3; ++i) fr.t1[i] = t[i] - tn * fr.n[i];
+  const double len_sq = dot(fr.t1, fr.t1);
+  const double inv_len = len_sq > 0 ? 1 / std::sqrt(len_sq) : 0.0;
+  for (int i = 0; i < 3; ++i) fr.t1[i] *= inv_len;
+  cross(fr.n, fr.t1, fr.t2);
+  return fr;
+}
+
+[[gnu::always_inline]] inline void TiebreakPairs::local_opening(const double* x, std::size_t p, const Frame& fr,
+                                                                double u[3]) const {
+  const auto& c = pairs_[p];
+  double d[3];
+  for (int i = 0; i < 3; ++i) d[i] = x[3 * c.upper + i] - x[3 * c.lower + i] - c.g0[i];
+  u[0] = dot(d, fr.n);
+  u[1] = dot(d, fr.t1);
+  u[2] = dot(d, fr.t2);
+}
+
+void TiebreakPairs::set_normal_refresh_interval(int passes) {
+  if (passes < 1) throw InputError(msg() << "tiebreak pairs: normal refresh interval must be >= 1 (got " << passes << ")");
+  normal_refresh_interval_ = passes;
+}
+
 TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec spec, const double* x_ref,
                              const double* nodal_mass)
     : law_(make_traction_law(params)), faces_(std::move(spec.faces)) {
@@ -75,11 +133,12 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
     }
   } else {
     build_face_adjacency(x_ref, spec.area.empty());
+    normals_.assign(3 * n, 0.0);
+    normals_from_faces(0, n);
   }
   for (std::size_t p = 0; p < n; ++p) {
     if (!(pairs_[p].area > 0)) throw InputError(msg() << "tiebreak pairs: pair " << p << " has no tributary area");
-    const Frame fr = frame(p);  // reference frame: faces use the reference face vectors here
-    perpendicular(fr.n, pairs_[p].t1_ref);
+    perpendicular(&normals_[3 * p], pairs_[p].t1_ref);
   }
 
   max_opening_.assign(n, 0.0);
@@ -121,64 +180,19 @@ void TiebreakPairs::build_face_adjacency(const double* x_ref, bool areas_from_fa
       throw InputError(msg() << "tiebreak pairs: pair " << p << " lies on no interface face (no normal)");
 }
 
-// Vector areas 1/2 (d_02 x d_13) of faces [begin, end) on the current mid-surface.
-void TiebreakPairs::compute_face_vectors(const double* x, std::size_t begin, std::size_t end) const {
-  for (std::size_t f = begin; f < end; ++f) {
-    const Index* q = &faces_[4 * f];
-    double m[4][3];
-    for (int k = 0; k < 4; ++k) {
-      const auto& c = pairs_[q[k]];
-      for (int i = 0; i < 3; ++i) m[k][i] = 0.5 * (x[3 * c.lower + i] + x[3 * c.upper + i]);
-    }
-    const double d1[3] = {m[2][0] - m[0][0], m[2][1] - m[0][1], m[2][2] - m[0][2]};
-    const double d2[3] = {m[3][0] - m[1][0], m[3][1] - m[1][1], m[3][2] - m[1][2]};
-    double* a = &face_vector_[3 * f];
-    cross(d1, d2, a);
-    for (int i = 0; i < 3; ++i) a[i] *= 0.5;
-  }
-}
-
-TiebreakPairs::Frame TiebreakPairs::frame(std::size_t p) const {
-  Frame fr;
-  if (faces_.empty()) {
-    for (int i = 0; i < 3; ++i) fr.n[i] = normals_[3 * p + i];
-  } else {
-    fr.n[0] = fr.n[1] = fr.n[2] = 0;
-    for (Index k = pair_face_offset_[p]; k < pair_face_offset_[p + 1]; ++k) {
-      const double* a = &face_vector_[3 * pair_face_[k]];
-      for (int i = 0; i < 3; ++i) fr.n[i] += a[i];
-    }
-    const double inv = 1 / std::sqrt(dot(fr.n, fr.n));
-    for (int i = 0; i < 3; ++i) fr.n[i] *= inv;
-  }
-  const double* t = pairs_[p].t1_ref;
-  const double tn = dot(t, fr.n);
-  for (int i = 0; i < 3; ++i) fr.t1[i] = t[i] - tn * fr.n[i];
-  const double len = std::sqrt(dot(fr.t1, fr.t1));
-  if (len > 0)
-    for (int i = 0; i < 3; ++i) fr.t1[i] /= len;
-  cross(fr.n, fr.t1, fr.t2);
-  return fr;
-}
-
-void TiebreakPairs::local_opening(const double* x, std::size_t p, const Frame& fr, double u[3]) const {
-  const auto& c = pairs_[p];
-  double d[3];
-  for (int i = 0; i < 3; ++i) d[i] = x[3 * c.upper + i] - x[3 * c.lower + i] - c.g0[i];
-  u[0] = dot(d, fr.n);
-  u[1] = dot(d, fr.t1);
-  u[2] = dot(d, fr.t2);
-}
-
 void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, double /*dt*/) {
   const std::size_t n = pairs_.size(), nf = faces_.size() / 4;
   const std::size_t chunks = chunk_elastic_.size();
   const bool parallel = nodes_distinct_ && n >= 2 * kChunk;
+  const bool refresh = nf && passes_ % std::uint64_t(normal_refresh_interval_) == 0;
+  ++passes_;
 #pragma omp parallel if (parallel)
   {
-    if (nf) {
+    if (refresh) {
 #pragma omp for schedule(static)
       for (std::size_t b = 0; b < nf; b += kChunk) compute_face_vectors(x, b, std::min(nf, b + kChunk));
+#pragma omp for schedule(static)
+      for (std::size_t b = 0; b < n; b += kChunk) normals_from_faces(b, std::min(n, b + kChunk));
     }
 #pragma omp for schedule(static)
     for (std::size_t ch = 0; ch < chunks; ++ch) {
@@ -239,7 +253,6 @@ void TiebreakPairs::set_nodal_mass(const double* nodal_mass) {
 }
 
 void TiebreakPairs::sample(const double* x, PairSample* out) const {
-  compute_face_vectors(x, 0, faces_.size() / 4);  // scratch only; the state is untouched
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     const Frame fr = frame(p);
     PairSample& s = out[p];
@@ -261,6 +274,8 @@ void TiebreakPairs::visit_state(StateVisitor& visitor) {
   visitor.array("slip_2", slip2_);
   visitor.array("stick_energy", stick_energy_);
   visitor.scalar("dissipated_energy", dissipated_energy_);
+  visitor.array("normal", normals_);
+  visitor.scalar("passes", passes_);
 }
 
 }  // namespace plyimpact::cohesive

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "cohesive/traction_law.hpp"
@@ -62,6 +63,11 @@ class TiebreakPairs {
   double stable_step() const { return stable_step_; }               // s, stiffest pair alone
   Index stable_step_pair() const { return stable_step_pair_; }      // the pair that sets it
 
+  // With faces, the normals are recomputed from the current mid-surface every `passes` calls of
+  // apply() (default 1: every pass). Between refreshes opening and force use the same frame, so each
+  // pair's spring stays conservative; the lag is the interface rotation over `passes` steps.
+  void set_normal_refresh_interval(int passes);
+
   // Recomputes the stable step after the nodal masses change (mass scaling, erosion).
   void set_nodal_mass(const double* nodal_mass);
 
@@ -70,11 +76,11 @@ class TiebreakPairs {
   const std::vector<double>& damage() const { return damage_; }    // (num_pairs)
   double area(std::size_t pair) const { return pairs_[pair].area; }
 
-  // Per-pair output for configuration x into out[0 .. size()).
+  // Per-pair output for configuration x into out[0 .. size()), in the frames of the last pass.
   void sample(const double* x, PairSample* out) const;
 
-  // Names the per-pair history (max_opening, damage, slip_1, slip_2, stick_energy) and the
-  // dissipated energy.
+  // Names the per-pair history (max_opening, damage, slip_1, slip_2, stick_energy), the dissipated
+  // energy, the normals and the pass count (both decide the frame when the refresh interval is > 1).
   void visit_state(StateVisitor& visitor);
 
  private:
@@ -88,18 +94,21 @@ class TiebreakPairs {
     double n[3], t1[3], t2[3];
   };
 
-  void compute_face_vectors(const double* x, std::size_t begin, std::size_t end) const;
+  void compute_face_vectors(const double* x, std::size_t begin, std::size_t end);
+  void normals_from_faces(std::size_t begin, std::size_t end);
   Frame frame(std::size_t p) const;
   void local_opening(const double* x, std::size_t p, const Frame& fr, double u[3]) const;
   void build_face_adjacency(const double* x_ref, bool areas_from_faces);
 
   TractionLaw law_;
   AlignedVector<PairConst, 64> pairs_;
-  std::vector<double> normals_;            // (num_pairs, 3) fixed normals when there are no faces
+  std::vector<double> normals_;            // (num_pairs, 3) unit normals: given, or from the faces
   std::vector<Index> faces_;               // (num_faces, 4)
   std::vector<Index> pair_face_offset_;    // (num_pairs + 1) CSR of the faces around each pair
   std::vector<Index> pair_face_;
-  mutable std::vector<double> face_vector_;  // (num_faces, 3) vector areas of the last pass (scratch)
+  std::vector<double> face_vector_;        // (num_faces, 3) vector areas of the last refresh (scratch)
+  int normal_refresh_interval_ = 1;
+  std::uint64_t passes_ = 0;               // apply() calls so far (when the normals are refreshed)
   bool nodes_distinct_ = true;
 
   // History, (num_pairs) each: see PointHistory.

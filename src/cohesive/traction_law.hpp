@@ -112,7 +112,7 @@ inline double final_opening(const TractionLaw& law, double c2, double s2, double
 namespace detail {
 
 // Damage growth when the opening exceeds its history maximum (delta > 0).
-inline void grow_damage(const TractionLaw& law, double ui, double us_sq, double open, const double u[3],
+[[gnu::noinline]] inline void grow_damage(const TractionLaw& law, double ui, double us_sq, double open, const double u[3],
                         PointHistory& h, double& dissipated) noexcept {
   const double open_sq = open * open;
   const double c2 = ui * ui / open_sq, s2 = us_sq / open_sq;
@@ -136,7 +136,7 @@ inline void grow_damage(const TractionLaw& law, double ui, double us_sq, double 
 }
 
 // Contact after separation: no tension, penalty in compression, Coulomb friction (return map).
-inline void separated_contact(const TractionLaw& law, const double u[3], PointHistory& h, PointResponse& r) noexcept {
+[[gnu::noinline]] inline void separated_contact(const TractionLaw& law, const double u[3], PointHistory& h, PointResponse& r) noexcept {
   const double e1 = u[1] - h.slip1, e2 = u[2] - h.slip2;
   const double trial_sq = law.kt * law.kt * (e1 * e1 + e2 * e2);  // |t_trial|^2
   r.damage = 1;
@@ -175,8 +175,9 @@ inline void separated_contact(const TractionLaw& law, const double u[3], PointHi
 
 }  // namespace detail
 
-// One update of one point: u = opening (normal, shear 1, shear 2) in m.
-inline void traction_update(const TractionLaw& law, const double u[3], PointHistory& h, PointResponse& r) noexcept {
+// One update of one point: u = opening (normal, shear 1, shear 2) in m. The common (elastic or
+// secant) path is inlined into the caller's loop; damage growth and contact are out of line.
+[[gnu::always_inline]] inline void traction_update(const TractionLaw& law, const double u[3], PointHistory& h, PointResponse& r) noexcept {
   const double ui = u[0] > 0 ? u[0] : 0;
   const double us_sq = u[1] * u[1] + u[2] * u[2];
   const double two_ei = law.kn * ui * ui, two_eii = law.kt * us_sq;
