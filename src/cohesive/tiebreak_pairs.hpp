@@ -3,7 +3,8 @@
 // acting on each pair's tributary area, until the pair separates and only contact is left.
 //   opening : delta = (x_upper - x_lower) - g_0 (g_0 the reference offset, normally 0), resolved in
 //             the pair's frame: n from the current mid-surface (area-weighted normal of the interface
-//             faces around the pair, faces given as quads of pair indices) or a fixed given normal;
+//             faces around the pair, faces given as quads of pair indices; refreshed every pass or
+//             every K passes) or a fixed given normal;
 //             t_1 = the reference tangent projected on the current tangent plane, t_2 = n x t_1.
 //   force   : F = A (t_n n + t_1 e_1 + t_2 e_2) on the lower node and -F on the upper one, so linear
 //             momentum is conserved to round-off. A is the reference tributary area (fixed: the spring
