@@ -152,7 +152,9 @@ TEST(TiebreakKernel, StableStepIsTheCentralDifferenceLimitOfThePair) {
     (void)b;
     // Below the limit the discrete oscillation stays within x_0 / sqrt(1 - (omega dt / 2)^2) = 7.1 x_0;
     // above it, it grows until it reaches the onset opening (60 x_0) and damages the pair.
-    if (factor < 1) EXPECT_LT(std::abs(x[3] - x[0]), 7.2e-8);
+    if (factor < 1) {
+      EXPECT_LT(std::abs(x[3] - x[0]), 7.2e-8);
+    }
     EXPECT_EQ(pairs.damage()[0] > 0, factor > 1);
   }
 }
