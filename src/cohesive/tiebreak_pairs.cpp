@@ -135,6 +135,9 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
     build_face_adjacency(x_ref, spec.area.empty());
     normals_.assign(3 * n, 0.0);
     normals_from_faces(0, n);
+    for (std::size_t p = 0; p < n; ++p)
+      if (!std::isfinite(normals_[3 * p]) || !std::isfinite(normals_[3 * p + 1]) || !std::isfinite(normals_[3 * p + 2]))
+        throw InputError(msg() << "tiebreak pairs: the faces around pair " << p << " have no area (no normal)");
   }
   for (std::size_t p = 0; p < n; ++p) {
     if (!(pairs_[p].area > 0)) throw InputError(msg() << "tiebreak pairs: pair " << p << " has no tributary area");
