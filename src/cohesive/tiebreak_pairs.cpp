@@ -85,6 +85,24 @@ void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
   u[2] = dot(d, fr.t2);
 }
 
+std::vector<Index> pair_faces_from_segments(const std::vector<Index>& lower_nodes,
+                                            const std::vector<Index>& lower_segments) {
+  Index max_node = -1;
+  for (Index node : lower_nodes) max_node = std::max(max_node, node);
+  std::vector<Index> pair_of(std::size_t(max_node) + 1, -1);
+  for (std::size_t p = 0; p < lower_nodes.size(); ++p) pair_of[lower_nodes[p]] = Index(p);
+  std::vector<Index> faces(lower_segments.size());
+  for (std::size_t k = 0; k < lower_segments.size(); ++k) {
+    const Index node = lower_segments[k];
+    const Index pair = node >= 0 && node <= max_node ? pair_of[node] : -1;
+    if (pair < 0)
+      throw InputError(msg() << "tiebreak pairs: segment " << k / 4 << " has corner node " << node
+                             << ", which is not the lower node of any pair");
+    faces[k] = pair;
+  }
+  return faces;
+}
+
 void TiebreakPairs::set_normal_refresh_interval(int passes) {
   if (passes < 1) throw InputError(msg() << "tiebreak pairs: normal refresh interval must be >= 1 (got " << passes << ")");
   normal_refresh_interval_ = passes;

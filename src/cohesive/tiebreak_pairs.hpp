@@ -40,6 +40,12 @@ struct TiebreakPairsSpec {
   std::vector<double> normals;   // (num_pairs, 3) unit normals pointing from the lower to the upper ply
 };
 
+// Interface faces as quads of pair indices from quads of lower-side node indices (faces whose normal
+// points to the upper ply, as the mesher's lower segments are). Throws InputError when a segment
+// corner is not a lower node of a pair.
+std::vector<Index> pair_faces_from_segments(const std::vector<Index>& lower_nodes,
+                                            const std::vector<Index>& lower_segments);
+
 // What an output frame shows of one pair (evaluated without changing the state).
 struct PairSample {
   double damage = 0;

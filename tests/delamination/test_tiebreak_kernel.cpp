@@ -180,6 +180,11 @@ TEST(TiebreakKernel, FacesGiveTheNormalAndTheTributaryAreas) {
       const Index q = 3 * j + i;
       s.faces.insert(s.faces.end(), {q, q + 1, q + 4, q + 3});
     }
+  // The same faces as the mesher gives them: quads of lower-side nodes (here node = pair index).
+  std::vector<Index> lower_segments;
+  for (Index q : s.faces) lower_segments.push_back(s.lower[q]);
+  EXPECT_EQ(pair_faces_from_segments(s.lower, lower_segments), s.faces);
+  EXPECT_THROW(pair_faces_from_segments(s.lower, {0, 1, 4, 12}), InputError);  // 12 is an upper node
   const auto p = test::table_8_6_option9();
   TiebreakPairs pairs(p, s, x.data(), mass.data());
   const double full = a * a;
