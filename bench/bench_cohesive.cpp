@@ -1,6 +1,6 @@
 // bench_cohesive: cost of one tiebreak pass (cohesive/tiebreak_pairs: face normals on the current
 // mid-surface, frame, opening, OPTION 9 law, force scatter, energy sums) per interface pair and
-// cycle, at 1e4 .. 1e6 pairs, one and two threads. The target: at most 0.3 of an element
+// cycle, at 1e4 .. 1e6 pairs, one and two threads. The target: at most 0.3 of an element
 // cycle per pair (bench_cycle gives the element cycle on the same machine).
 // Model: an n x n grid of matching node pairs (0.5 mm spacing) with the seed's Table 8.6 law, the
 // upper nodes opened by a field that grows every cycle on a tenth of the pairs, which soften (the
