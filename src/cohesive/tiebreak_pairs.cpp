@@ -1,0 +1,302 @@
+#include "cohesive/tiebreak_pairs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+
+namespace plyimpact::cohesive {
+namespace {
+
+// Pairs per chunk of the energy sums: fixed, so the sums do not depend on the thread count.
+constexpr std::size_t kChunk = 1024;
+
+inline void cross(const double a[3], const double b[3], double c[3]) {
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+inline double dot(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+// Any unit vector perpendicular to the unit vector n.
+void perpendicular(const double n[3], double t[3]) {
+  const double ax[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(n[i]) < std::abs(n[k])) k = i;
+  cross(n, ax[k], t);
+  const double len = std::sqrt(dot(t, t));
+  for (int i = 0; i < 3; ++i) t[i] /= len;
+}
+
+}  // namespace
+
+// Vector areas 1/2 (d_02 x d_13) of faces [begin, end) on the current mid-surface.
+void TiebreakPairs::compute_face_vectors(const double* x, std::size_t begin, std::size_t end) {
+  for (std::size_t f = begin; f < end; ++f) {
+    const Index* q = &faces_[4 * f];
+    double m[4][3];
+    for (int k = 0; k < 4; ++k) {
+      const auto& c = pairs_[q[k]];
+      for (int i = 0; i < 3; ++i) m[k][i] = 0.5 * (x[3 * c.lower + i] + x[3 * c.upper + i]);
+    }
+    const double d1[3] = {m[2][0] - m[0][0], m[2][1] - m[0][1], m[2][2] - m[0][2]};
+    const double d2[3] = {m[3][0] - m[1][0], m[3][1] - m[1][1], m[3][2] - m[1][2]};
+    double* a = &face_vector_[3 * f];
+    cross(d1, d2, a);
+    for (int i = 0; i < 3; ++i) a[i] *= 0.5;
+  }
+}
+
+// Unit normals of pairs [begin, end) from the face vector areas around each (current face_vector_).
+void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
+  for (std::size_t p = begin; p < end; ++p) {
+    double n[3] = {0, 0, 0};
+    for (Index k = pair_face_offset_[p]; k < pair_face_offset_[p + 1]; ++k) {
+      const double* a = &face_vector_[3 * pair_face_[k]];
+      for (int i = 0; i < 3; ++i) n[i] += a[i];
+    }
+    const double inv = 1 / std::sqrt(dot(n, n));
+    for (int i = 0; i < 3; ++i) normals_[3 * p + i] = n[i] * inv;
+  }
+}
+
+[[gnu::always_inline]] inline TiebreakPairs::Frame TiebreakPairs::frame(std::size_t p) const {
+  Frame fr;
+  for (int i = 0; i < 3; ++i) fr.n[i] = normals_[3 * p + i];
+  const double* t = pairs_[p].t1_ref;
+  const double tn = dot(t, fr.n);
+  for (int i = 0; i < 3; ++i) fr.t1[i] = t[i] - tn * fr.n[i];
+  const double len_sq = dot(fr.t1, fr.t1);
+  const double inv_len = len_sq > 0 ? 1 / std::sqrt(len_sq) : 0.0;
+  for (int i = 0; i < 3; ++i) fr.t1[i] *= inv_len;
+  cross(fr.n, fr.t1, fr.t2);
+  return fr;
+}
+
+[[gnu::always_inline]] inline void TiebreakPairs::local_opening(const double* x, std::size_t p, const Frame& fr,
+                                                                double u[3]) const {
+  const auto& c = pairs_[p];
+  double d[3];
+  for (int i = 0; i < 3; ++i) d[i] = x[3 * c.upper + i] - x[3 * c.lower + i] - c.g0[i];
+  u[0] = dot(d, fr.n);
+  u[1] = dot(d, fr.t1);
+  u[2] = dot(d, fr.t2);
+}
+
+std::vector<Index> pair_faces_from_segments(const std::vector<Index>& lower_nodes,
+                                            const std::vector<Index>& lower_segments) {
+  Index max_node = -1;
+  for (Index node : lower_nodes) max_node = std::max(max_node, node);
+  std::vector<Index> pair_of(std::size_t(max_node) + 1, -1);
+  for (std::size_t p = 0; p < lower_nodes.size(); ++p) pair_of[lower_nodes[p]] = Index(p);
+  std::vector<Index> faces(lower_segments.size());
+  for (std::size_t k = 0; k < lower_segments.size(); ++k) {
+    const Index node = lower_segments[k];
+    const Index pair = node >= 0 && node <= max_node ? pair_of[node] : -1;
+    if (pair < 0)
+      throw InputError(msg() << "tiebreak pairs: segment " << k / 4 << " has corner node " << node
+                             << ", which is not the lower node of any pair");
+    faces[k] = pair;
+  }
+  return faces;
+}
+
+void TiebreakPairs::set_normal_refresh_interval(int passes) {
+  if (passes < 1) throw InputError(msg() << "tiebreak pairs: normal refresh interval must be >= 1 (got " << passes << ")");
+  normal_refresh_interval_ = passes;
+}
+
+TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec spec, const double* x_ref,
+                             const double* nodal_mass)
+    : law_(make_traction_law(params)), faces_(std::move(spec.faces)) {
+  const std::size_t n = spec.lower.size();
+  if (spec.upper.size() != n) throw InputError(msg() << "tiebreak pairs: " << n << " lower nodes but " << spec.upper.size() << " upper");
+  if (!spec.area.empty() && spec.area.size() != n)
+    throw InputError(msg() << "tiebreak pairs: " << spec.area.size() << " areas for " << n << " pairs");
+  if (faces_.empty() && spec.normals.size() != 3 * n)
+    throw InputError(msg() << "tiebreak pairs: neither interface faces nor " << n << " normals given");
+  if (faces_.size() % 4) throw InputError("tiebreak pairs: faces must be quads of pair indices");
+  for (Index p : faces_)
+    if (p < 0 || std::size_t(p) >= n) throw InputError(msg() << "tiebreak pairs: face refers to pair " << p << " of " << n);
+
+  pairs_.resize(n);
+  Index max_node = -1;
+  for (std::size_t p = 0; p < n; ++p) {
+    auto& c = pairs_[p];
+    c.lower = spec.lower[p];
+    c.upper = spec.upper[p];
+    if (c.lower < 0 || c.upper < 0 || c.lower == c.upper)
+      throw InputError(msg() << "tiebreak pairs: pair " << p << " has nodes " << c.lower << ", " << c.upper);
+    max_node = std::max({max_node, c.lower, c.upper});
+    for (int i = 0; i < 3; ++i) c.g0[i] = x_ref[3 * c.upper + i] - x_ref[3 * c.lower + i];
+    if (!spec.area.empty()) c.area = spec.area[p];
+  }
+  std::vector<char> seen(std::size_t(max_node) + 1, 0);
+  for (const auto& c : pairs_) {
+    for (Index node : {c.lower, c.upper}) {
+      if (seen[node]) nodes_distinct_ = false;
+      seen[node] = 1;
+    }
+  }
+
+  if (faces_.empty()) {
+    normals_ = std::move(spec.normals);
+    for (std::size_t p = 0; p < n; ++p) {
+      double* nn = &normals_[3 * p];
+      const double len = std::sqrt(dot(nn, nn));
+      if (!(len > 0)) throw InputError(msg() << "tiebreak pairs: pair " << p << " has a zero normal");
+      for (int i = 0; i < 3; ++i) nn[i] /= len;
+    }
+  } else {
+    build_face_adjacency(x_ref, spec.area.empty());
+    normals_.assign(3 * n, 0.0);
+    normals_from_faces(0, n);
+    for (std::size_t p = 0; p < n; ++p)
+      if (!std::isfinite(normals_[3 * p]) || !std::isfinite(normals_[3 * p + 1]) || !std::isfinite(normals_[3 * p + 2]))
+        throw InputError(msg() << "tiebreak pairs: the faces around pair " << p << " have no area (no normal)");
+  }
+  for (std::size_t p = 0; p < n; ++p) {
+    if (!(pairs_[p].area > 0)) throw InputError(msg() << "tiebreak pairs: pair " << p << " has no tributary area");
+    perpendicular(&normals_[3 * p], pairs_[p].t1_ref);
+  }
+
+  max_opening_.assign(n, 0.0);
+  damage_.assign(n, 0.0);
+  slip1_.assign(n, 0.0);
+  slip2_.assign(n, 0.0);
+  stick_energy_.assign(n, 0.0);
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  chunk_elastic_.assign(chunks, 0.0);
+  chunk_dissipated_.assign(chunks, 0.0);
+  chunk_separated_.assign(chunks, 0.0);
+  set_nodal_mass(nodal_mass);
+}
+
+void TiebreakPairs::build_face_adjacency(const double* x_ref, bool areas_from_faces) {
+  const std::size_t n = pairs_.size(), nf = faces_.size() / 4;
+  face_vector_.assign(3 * nf, 0.0);
+  compute_face_vectors(x_ref, 0, nf);
+  std::vector<Index> count(n + 1, 0);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const Index* q = &faces_[4 * f];
+    const int distinct = q[3] == q[2] ? 3 : 4;
+    const double a = std::sqrt(dot(&face_vector_[3 * f], &face_vector_[3 * f]));
+    for (int k = 0; k < distinct; ++k) {
+      ++count[q[k] + 1];
+      if (areas_from_faces) pairs_[q[k]].area += a / distinct;
+    }
+  }
+  for (std::size_t p = 0; p < n; ++p) count[p + 1] += count[p];
+  pair_face_offset_ = count;
+  pair_face_.resize(count[n]);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const Index* q = &faces_[4 * f];
+    const int distinct = q[3] == q[2] ? 3 : 4;
+    for (int k = 0; k < distinct; ++k) pair_face_[count[q[k]]++] = Index(f);
+  }
+  for (std::size_t p = 0; p < n; ++p)
+    if (pair_face_offset_[p] == pair_face_offset_[p + 1])
+      throw InputError(msg() << "tiebreak pairs: pair " << p << " lies on no interface face (no normal)");
+}
+
+void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, double /*dt*/) {
+  const std::size_t n = pairs_.size(), nf = faces_.size() / 4;
+  const std::size_t chunks = chunk_elastic_.size();
+  const bool parallel = nodes_distinct_ && n >= 2 * kChunk;
+  const bool refresh = nf && passes_ % std::uint64_t(normal_refresh_interval_) == 0;
+  ++passes_;
+#pragma omp parallel if (parallel)
+  {
+    if (refresh) {
+#pragma omp for schedule(static)
+      for (std::size_t b = 0; b < nf; b += kChunk) compute_face_vectors(x, b, std::min(nf, b + kChunk));
+#pragma omp for schedule(static)
+      for (std::size_t b = 0; b < n; b += kChunk) normals_from_faces(b, std::min(n, b + kChunk));
+    }
+#pragma omp for schedule(static)
+    for (std::size_t ch = 0; ch < chunks; ++ch) {
+      double elastic = 0, dissipated = 0, separated = 0;
+      const std::size_t end = std::min(n, (ch + 1) * kChunk);
+      for (std::size_t p = ch * kChunk; p < end; ++p) {
+        const Frame fr = frame(p);
+        double u[3];
+        local_opening(x, p, fr, u);
+        PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
+        PointResponse r;
+        traction_update(law_, u, h, r);
+        max_opening_[p] = h.max_opening;
+        damage_[p] = h.damage;
+        slip1_[p] = h.slip1;
+        slip2_[p] = h.slip2;
+        stick_energy_[p] = h.stick_energy;
+        const auto& c = pairs_[p];
+        const double* t = r.traction;
+        for (int i = 0; i < 3; ++i) {
+          const double force = c.area * (t[0] * fr.n[i] + t[1] * fr.t1[i] + t[2] * fr.t2[i]);
+          f[3 * c.lower + i] += force;
+          f[3 * c.upper + i] -= force;
+        }
+        elastic += c.area * r.elastic_energy;
+        dissipated += c.area * r.dissipated_increment;
+        if (h.damage >= 1) separated += c.area;
+      }
+      chunk_elastic_[ch] = elastic;
+      chunk_dissipated_[ch] = dissipated;
+      chunk_separated_[ch] = separated;
+    }
+  }
+  double elastic = 0, dissipated = 0, separated = 0;
+  for (std::size_t ch = 0; ch < chunks; ++ch) {
+    elastic += chunk_elastic_[ch];
+    dissipated += chunk_dissipated_[ch];
+    separated += chunk_separated_[ch];
+  }
+  elastic_energy_ = elastic;
+  dissipated_energy_ += dissipated;
+  separated_area_ = separated;
+}
+
+void TiebreakPairs::set_nodal_mass(const double* nodal_mass) {
+  stable_step_ = std::numeric_limits<double>::infinity();
+  stable_step_pair_ = -1;
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    const auto& c = pairs_[p];
+    const double k = law_.k_max * c.area;
+    const double omega_sq = k * (1 / nodal_mass[c.lower] + 1 / nodal_mass[c.upper]);
+    const double dt = 2 / std::sqrt(omega_sq);
+    if (dt < stable_step_) {
+      stable_step_ = dt;
+      stable_step_pair_ = Index(p);
+    }
+  }
+}
+
+void TiebreakPairs::sample(const double* x, PairSample* out) const {
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    const Frame fr = frame(p);
+    PairSample& s = out[p];
+    local_opening(x, p, fr, s.opening);
+    PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
+    PointResponse r;
+    traction_update(law_, s.opening, h, r);
+    s.damage = r.damage;
+    s.mixity = r.mixity;
+    for (int i = 0; i < 3; ++i) s.traction[i] = r.traction[i];
+  }
+}
+
+void TiebreakPairs::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "tiebreak pairs");
+  visitor.array("max_opening", max_opening_);
+  visitor.array("damage", damage_);
+  visitor.array("slip_1", slip1_);
+  visitor.array("slip_2", slip2_);
+  visitor.array("stick_energy", stick_energy_);
+  visitor.scalar("dissipated_energy", dissipated_energy_);
+  visitor.array("normal", normals_);
+  visitor.scalar("passes", passes_);
+}
+
+}  // namespace plyimpact::cohesive
