@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/convert_command.hpp"
 #include "app/mesh_export.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
@@ -32,6 +33,8 @@ constexpr const char* kUsage =
     "  mesh SCENE.yaml [-o DIR]  mesh the scene and write it for inspection (default results/<scene>):\n"
     "                            <scene>_mesh.vtu (parts, plies, ply angles, material axes,\n"
     "                            interfaces) and <scene>.msh (gmsh)\n"
+    "  convert DECK.k --units U [-o SCENE.yaml] [--coverage]   LS-DYNA keyword deck -> scene + .msh\n"
+    "  run DECK.k --units U [-o DIR]   convert the deck into DIR and run it\n"
     "  --help                    this text\n"
     "  --version                 program version\n"
     "\n"
@@ -186,6 +189,7 @@ int run_application(const std::vector<std::string>& args, std::ostream& out, std
       out << "plyimpact " << PLYIMPACT_VERSION << "\n";
       return 0;
     }
+    if (is_keyword_command(args)) return keyword_command(args, out, err, run);
     if ((args[0] == "run" || args[0] == "check" || args[0] == "mesh") && args.size() >= 2) {
       std::string out_dir;
       for (std::size_t i = 2; i < args.size(); ++i) {
