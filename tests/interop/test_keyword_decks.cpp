@@ -8,7 +8,10 @@
 // keyword and the field (unknown keyword, unsupported option, unsupported field value).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <iostream>
+#include <sstream>
 
 #include "config/scene_loader.hpp"
 #include "interop_support.hpp"
@@ -102,6 +105,76 @@ boundary_conditions:
 )";
   const std::string a = deck_history("laminate_mat054.k", dir), b = yaml_history(yaml, dir);
   EXPECT_GT(std::count(a.begin(), a.end(), '\n'), 190);
+  EXPECT_EQ(a, b);
+  fs::remove_all(dir);
+}
+
+// Hertz-like impact: the sphere is meshed by the impactor mesher (gmsh) from the YAML scene, so
+// the deck's mesh include is written here from that mesh (comma format, 17 significant digits:
+// exact), numbered as the mesh is; the physics cards are the committed deck.
+TEST(KeywordDecks, SphereOnBlockGivesTheHistoryOfTheYamlScene) {
+  const fs::path dir = test::scratch_dir();
+  const std::string yaml = R"(units: SI
+control: {termination_time: 2.0e-5, tssfac: 0.9}
+output: {interval: 1.0e-5, history_interval: 2.0e-7}
+materials:
+  mat_1: {card: MAT_001, RO: 2700, E: 7.0e10, PR: 0.3}
+  mat_2: {card: MAT_001, RO: 7850, E: 2.1e11, PR: 0.3}
+sections:
+  sec_1_hg1: {ELFORM: 1, IHQ: 3, QM: 0.1, Q1: 1.5, Q2: 0.06}
+parts:
+  part_1: {id: 1, material: mat_1, section: sec_1_hg1}
+mesh:
+  boxes:
+    - {part: part_1, origin: [-0.005, -0.005, -0.005], size: [0.01, 0.01, 0.005], elements: [8, 8, 4]}
+node_sets:
+  set_1: {plane: {axis: z, value: -0.005}}
+boundary_conditions:
+  - {node_set: set_1, fix: [x, y, z]}
+impactor: {shape: sphere, diameter: 0.006, rigid: false, material: mat_2, section: sec_1_hg1, gap: 5.0e-5,
+           velocity: 5, element_size: 0.0015}
+contacts:
+  - {name: contact_1, type: automatic_surface_to_surface, surfaces: [impactor, part_1], SOFT: 0, SOFSCL: 0.1,
+     MAXPAR: 1.025, FS: 0, FD: 0, SFS: 1, SFM: 1}
+)";
+  const config::Scene scene = config::load_scene_from_string(yaml, (dir / "yaml.yaml").string());
+  const mesh::Mesh m = mesh::mesh_scene(scene);
+  ASSERT_EQ(scene.parts.size(), 2u);
+  std::string inc = "*NODE\n";
+  char buf[160];
+  for (std::size_t i = 0; i < m.num_nodes(); ++i) {
+    std::snprintf(buf, sizeof buf, "%zu,%.17g,%.17g,%.17g\n", i + 1, m.coords[3 * i], m.coords[3 * i + 1], m.coords[3 * i + 2]);
+    inc += buf;
+  }
+  inc += "*ELEMENT_SOLID\n";
+  for (std::size_t e = 0; e < m.num_elements(); ++e) {
+    inc += std::to_string(e + 1) + "," + std::to_string(scene.parts[std::size_t(m.element_part[e])].id);
+    for (int k = 0; k < 8; ++k) inc += "," + std::to_string(m.hex[8 * e + k] + 1);
+    inc += "\n";
+  }
+  inc += "*SET_NODE_LIST\n1\n";
+  for (std::size_t i = 0; i < m.num_nodes(); ++i)
+    if (m.coords[3 * i + 2] == -0.005) inc += std::to_string(i + 1) + "\n";
+  test::write_file(dir / "sphere_on_block_mesh.k", inc);
+  fs::copy_file(kDecks / "sphere_on_block.k", dir / "sphere_on_block.k");
+  keyword::convert_deck_file((dir / "sphere_on_block.k").string(), "SI", dir / "deck.yaml");
+  const std::string a = test::run_history(config::load_scene((dir / "deck.yaml").string()), dir / "deck_run");
+  const std::string b = yaml_history(yaml, dir);
+  EXPECT_GT(std::count(a.begin(), a.end(), '\n'), 95);
+  // The sphere reaches the block (gap 50 um at 5 m/s: after 10 us) and pushes on it.
+  std::istringstream rows(a);
+  std::string header, row;
+  std::getline(rows, header);
+  const auto column = std::count(header.begin(), header.begin() + long(header.find("contact_contact_1_normal")), ',');
+  double peak = 0;
+  while (std::getline(rows, row)) {
+    std::istringstream cells(row);
+    std::string cell;
+    for (long k = 0; k <= column; ++k) std::getline(cells, cell, ',');
+    peak = std::max(peak, std::abs(std::stod(cell)));
+  }
+  std::cout << "sphere on block: peak contact force " << peak << " N\n";
+  EXPECT_GT(peak, 10.0);
   EXPECT_EQ(a, b);
   fs::remove_all(dir);
 }
