@@ -114,6 +114,7 @@ struct InitialVelocity {
 
 struct Contact {
   bool single = false, eroding = false;
+  bool all_parts = false;  // single surface with SSID 0 / SSTYP 5: every part
   std::vector<long> a, b;  // part ids
   std::vector<std::pair<std::string, std::string>> fields;
 };
@@ -123,19 +124,25 @@ class Converter {
   explicit Converter(const ConvertOptions& o) : options_(o), units_(units::parse_unit_system(o.unit_system)) {}
 
   Conversion run(const Deck& deck) {
-    for (const Card& c : deck.cards) {
-      CoverageEntry e{c.file, c.line, c.keyword, "used", ""};
-      try {
-        last_note_.clear();
-        e.note = dispatch(c, e.status);
-        if (e.note.empty()) e.note = last_note_;
-      } catch (const InputError& err) {
-        e.status = "refused";
-        e.note = err.what();
+    // A deck's order carries no meaning: sets are read first, so a card may name a set defined
+    // after it. Coverage stays in deck order.
+    out_.coverage.resize(deck.cards.size());
+    for (int pass = 0; pass < 2; ++pass)
+      for (std::size_t i = 0; i < deck.cards.size(); ++i) {
+        const Card& c = deck.cards[i];
+        if ((c.keyword.rfind("SET_", 0) == 0) != (pass == 0)) continue;
+        CoverageEntry e{c.file, c.line, c.keyword, "used", ""};
+        try {
+          last_note_.clear();
+          e.note = dispatch(c, e.status);
+          if (e.note.empty()) e.note = last_note_;
+        } catch (const InputError& err) {
+          e.status = "refused";
+          e.note = err.what();
+        }
+        out_.coverage[i] = std::move(e);
+        entry_of_[&c] = i;
       }
-      out_.coverage.push_back(std::move(e));
-      entry_of_[&c] = out_.coverage.size() - 1;
-    }
     if (!out_.refused()) {
       try {
         emit();
@@ -290,7 +297,8 @@ class Converter {
         f.fail("N1", "the two-card (EID PID / N1..N10) format is not supported; allowed: EID PID N1..N8 on one line");
       std::set<long> distinct;
       for (int k = 0; k < 8; ++k) {
-        const std::string name = "N" + std::to_string(k + 1);
+        std::string name = "N";
+        name += char('1' + k);
         e.n[k] = f.integer(name, 0);
         if (e.n[k] <= 0) f.fail(name, "a node id is needed");
         distinct.insert(e.n[k]);
@@ -362,12 +370,13 @@ class Converter {
     return "into the sections of the parts that use it (IHQ, QM, Q1, Q2)";
   }
 
-  // *CONTROL_HOURGLASS (Vol. I): IHQ (default 1), QH (default 0.1).
+  // *CONTROL_HOURGLASS (Vol. I): IHQ, QH (default 0.1). Blank IHQ: LS-DYNA's default for
+  // one-point solids in explicit runs, type 2 since 971 R3.1 (LSTC support FAQ "hourglass").
   std::string control_hourglass(const Card& c, std::string& status) {
     status = "mapped";
     const FixedCards cards(c, 1);
     const Fields f = cards.fields(0, tens({"IHQ", "QH"}));
-    control_ihq_ = f.integer("IHQ", 1);
+    control_ihq_ = f.integer("IHQ", 2);
     if (control_ihq_ < 1 || control_ihq_ > 6) f.fail("IHQ", "hourglass type not implemented; allowed: 1 to 6");
     control_qh_ = f.real("QH", 0.1);
     return "IHQ/QM of every section without its own *HOURGLASS";
@@ -549,7 +558,9 @@ class Converter {
     const Fields f4 = cards.fields(3, tens({"ES1", "ES2", "ES3", "ES4", "ES5", "ES6", "ES7", "ES8"}));
     std::string table;
     for (int k = 1; k <= 8; ++k) {
-      const std::string e = "EPS" + std::to_string(k), s = "ES" + std::to_string(k);
+      std::string e = "EPS", s = "ES";
+      e += char('0' + k);
+      s += char('0' + k);
       if (f3.blank(e) && f4.blank(s)) continue;
       if (m.lcss > 0) f3.fail(e, "both LCSS and the EPS/ES table; allowed: one of them");
       table += std::string(table.empty() ? "" : ", ") + "[" + num(f3.real(e, 0)) + ", " + num(f4.real(s, 0)) + "]";
@@ -605,9 +616,12 @@ class Converter {
     std::vector<long> ids;
     for (std::size_t i = 1; i < l.size(); ++i) {
       const Fields f(c, *l[i], tens({"ID1", "ID2", "ID3", "ID4", "ID5", "ID6", "ID7", "ID8"}));
-      for (int k = 1; k <= 8; ++k)
-        if (const long id = f.integer("ID" + std::to_string(k), 0); id > 0) ids.push_back(id);
-        else if (id < 0) f.fail("ID" + std::to_string(k), "negative ids not supported");
+      for (int k = 1; k <= 8; ++k) {
+        std::string name = "ID";
+        name += char('0' + k);
+        if (const long id = f.integer(name, 0); id > 0) ids.push_back(id);
+        else if (id < 0) f.fail(name, "negative ids not supported");
+      }
     }
     return ids;
   }
@@ -764,7 +778,7 @@ class Converter {
       v.where = &c;
       v.v[0] = f.real("VX", 0), v.v[1] = f.real("VY", 0), v.v[2] = f.real("VZ", 0);
       if (styp == 1) {
-        if (!part_sets_.count(id)) f.fail("ID", "no *SET_PART_LIST with this id before this card");
+        if (!part_sets_.count(id)) f.fail("ID", "no *SET_PART_LIST with this id");
         v.parts = part_sets_[id];
       } else if (styp == 2) {
         v.parts = {id};
@@ -798,7 +812,7 @@ class Converter {
       const long id = f1.integer(id_name, 0), type = f1.integer(type_name, 0);
       if (type == 3) out = {id};
       else if (type == 2) {
-        if (!part_sets_.count(id)) f1.fail(id_name, "no *SET_PART_LIST with this id before this card");
+        if (!part_sets_.count(id)) f1.fail(id_name, "no *SET_PART_LIST with this id");
         out = part_sets_[id];
       } else if (type == 0 && segment_sets_.count(id)) {
         f1.fail(type_name, "segment-set surfaces (*SET_SEGMENT) are not implemented; allowed: 2 (part set) or 3 (part)");
@@ -806,7 +820,12 @@ class Converter {
         f1.fail(type_name, "allowed: 2 (part set) or 3 (part)");
       }
     };
-    side("SSID", "SSTYP", k.a);
+    // Single surface: SSID 0 (or SSTYP 5) includes every part (manual, *CONTACT card 1, SSID EQ.0).
+    if (k.single && (f1.integer("SSTYP", 0) == 5 || (f1.integer("SSID", 0) == 0 && f1.integer("SSTYP", 0) != 2 &&
+                                                      f1.integer("SSTYP", 0) != 3)))
+      k.all_parts = true;
+    else
+      side("SSID", "SSTYP", k.a);
     if (k.single) {
       f1.require_default("MSID", 0, "single surface");
       f1.require_default("MSTYP", 0, "single surface");
@@ -1051,7 +1070,7 @@ class Converter {
         const Contact& k = contacts_[i];
         const std::string type = std::string(k.eroding ? "eroding" : "automatic") + (k.single ? "_single_surface" : "_surface_to_surface");
         y << "  - name: contact_" << i + 1 << "\n    type: " << type << "\n";
-        const auto a = part_names(k.a, contact_cards_[i]);
+        const auto a = k.all_parts ? part_names(part_order_, contact_cards_[i]) : part_names(k.a, contact_cards_[i]);
         if (k.single) y << "    parts: [" << join(a) << "]\n";
         else y << "    surfaces: [[" << join(a) << "], [" << join(part_names(k.b, contact_cards_[i])) << "]]\n";
         for (const auto& [key, value] : k.fields) y << "    " << key << ": " << value << "\n";
@@ -1079,6 +1098,10 @@ class Converter {
       index[nid] = Index(index.size());
       for (double c : x) m.coords.push_back(c * units_.length);
     }
+    if (index.size() < nodes_.size())
+      for (auto& e : out_.coverage)
+        if (e.keyword == "NODE")
+          e.note += msg() << "; " << nodes_.size() - index.size() << " node(s) of no element left out (no mass, no effect)";
     for (const auto& [eid, e] : elements_) {
       const auto p = part_index.find(e.pid);
       if (p == part_index.end())
@@ -1149,7 +1172,7 @@ class Converter {
   std::vector<long> part_order_;
   std::map<long, long> sections_;
   std::map<long, Hourglass> hourglass_;
-  long control_ihq_ = 1;
+  long control_ihq_ = 2;  // explicit default for solids (see control_hourglass)
   double control_qh_ = 0.1, bulk_q1_ = 1.5, bulk_q2_ = 0.06;
   double endtim_ = 0, dtmin_ = 0, tssfac_ = 0.9, frame_dt_ = 0, history_dt_ = 0;
   long endcyc_ = 0;

@@ -117,7 +117,7 @@ struct Reader {
 Deck read_deck(const std::string& path) {
   Deck deck;
   deck.file = path;
-  Reader r{deck};
+  Reader r{deck, false, {}};
   r.read_file(path, "", 0);
   return deck;
 }

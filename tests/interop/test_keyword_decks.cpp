@@ -44,7 +44,7 @@ output: {interval: 2.5e-5, history_interval: 1.0e-6}
 materials:
   mat_1: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}
 sections:
-  sec_1: {ELFORM: 2, IHQ: 1, QM: 0.1, Q1: 1.5, Q2: 0.06}
+  sec_1: {ELFORM: 2, IHQ: 2, QM: 0.1, Q1: 1.5, Q2: 0.06}
 parts:
   part_1: {id: 1, material: mat_1, section: sec_1}
 mesh:
@@ -148,13 +148,21 @@ contacts:
   }
   inc += "*ELEMENT_SOLID\n";
   for (std::size_t e = 0; e < m.num_elements(); ++e) {
-    inc += std::to_string(e + 1) + "," + std::to_string(scene.parts[std::size_t(m.element_part[e])].id);
-    for (int k = 0; k < 8; ++k) inc += "," + std::to_string(m.hex[8 * e + k] + 1);
+    inc += std::to_string(e + 1);
+    inc += ',';
+    inc += std::to_string(scene.parts[std::size_t(m.element_part[e])].id);
+    for (int k = 0; k < 8; ++k) {
+      inc += ',';
+      inc += std::to_string(m.hex[8 * e + k] + 1);
+    }
     inc += "\n";
   }
   inc += "*SET_NODE_LIST\n1\n";
   for (std::size_t i = 0; i < m.num_nodes(); ++i)
-    if (m.coords[3 * i + 2] == -0.005) inc += std::to_string(i + 1) + "\n";
+    if (m.coords[3 * i + 2] == -0.005) {
+      inc += std::to_string(i + 1);
+      inc += '\n';
+    }
   test::write_file(dir / "sphere_on_block_mesh.k", inc);
   fs::copy_file(kDecks / "sphere_on_block.k", dir / "sphere_on_block.k");
   keyword::convert_deck_file((dir / "sphere_on_block.k").string(), "SI", dir / "deck.yaml");
@@ -321,7 +329,9 @@ TEST(KeywordRefusals, UnknownKeywordUnsupportedOptionAndFieldValueNameTheLine) {
       << refusal(c, "CONTROL_TIMESTEP");
   // The other cards are still reported, as used or mapped.
   for (const auto& e : c.coverage)
-    if (e.keyword == "MAT_ELASTIC") EXPECT_EQ(e.status, "used");
+    if (e.keyword == "MAT_ELASTIC") {
+      EXPECT_EQ(e.status, "used");
+    }
   // convert_deck_file refuses the deck as a whole, listing every refusal.
   try {
     keyword::convert_deck_file(file, "SI", dir / "out.yaml");
@@ -346,6 +356,23 @@ TEST(KeywordRefusals, FieldValuesTheSolverDoesNotHaveAreRefusedNotDropped) {
   EXPECT_NE(refusal(c, "NODE").find(":6: *NODE: field TC = '7'"), std::string::npos);
   EXPECT_NE(refusal(c, "ELEMENT_SOLID").find(":8: *ELEMENT_SOLID: field N8 = '7': degenerate"), std::string::npos)
       << refusal(c, "ELEMENT_SOLID");
+  fs::remove_all(dir);
+}
+
+TEST(KeywordRefusals, SegmentSetContactIsRefusedAndSingleSurfaceZeroTakesEveryPart) {
+  const fs::path dir = test::scratch_dir();
+  const std::string mesh = "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+                           "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n";               // lines 10-20
+  const std::string single = "*CONTACT_AUTOMATIC_SINGLE_SURFACE\n0\n";
+  const auto c = convert_text(dir, kCube + mesh + "*SET_SEGMENT\n1\n1,2,3,4\n"   // 21-23
+                                       "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE\n1,1,0,3\n" + single);  // 24-25
+  EXPECT_NE(refusal(c, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE")
+                .find(":25: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE: field SSTYP = '0': segment-set surfaces"),
+            std::string::npos)
+      << refusal(c, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE");
+  const auto d = convert_text(dir, kCube + mesh + single);
+  ASSERT_FALSE(d.refused()) << keyword::refusals(d);
+  EXPECT_NE(d.yaml.find("type: automatic_single_surface\n    parts: [part_1]"), std::string::npos) << d.yaml;
   fs::remove_all(dir);
 }
 

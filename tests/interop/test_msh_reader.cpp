@@ -147,7 +147,9 @@ TEST(MshReader, AsciiFileGivesPartsAndNodeSetsInTheScenesLengthUnit) {
   for (const auto& s : m.node_sets) names.insert(s.name);
   EXPECT_TRUE(names.count("bottom") && names.count("corner") && names.count("block"));
   for (const auto& s : m.node_sets)
-    if (s.name == "bottom") EXPECT_EQ(s.nodes, (std::vector<Index>{0, 1, 2, 3}));
+    if (s.name == "bottom") {
+      EXPECT_EQ(s.nodes, (std::vector<Index>{0, 1, 2, 3}));
+    }
   fs::remove_all(dir);
 }
 
