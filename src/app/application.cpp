@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "app/convert_command.hpp"
 #include "app/dcb_reduce_command.hpp"
 #include "app/mesh_export.hpp"
 #include "app/plot_command.hpp"
@@ -34,6 +35,8 @@ constexpr const char* kUsageHead =
     "  mesh SCENE.yaml [-o DIR]  mesh the scene and write it for inspection (default results/<scene>):\n"
     "                            <scene>_mesh.vtu (parts, plies, ply angles, material axes,\n"
     "                            interfaces) and <scene>.msh (gmsh)\n"
+    "  convert DECK.k --units U [-o SCENE.yaml] [--coverage]   LS-DYNA keyword deck -> scene + .msh\n"
+    "  run DECK.k --units U [-o DIR]   convert the deck into DIR and run it\n"
     "  run, check and mesh also take  --set key.path=value [...]  (change a scene value before it is\n"
     "                            read: units and validation as in the file, e.g. --set control.tssfac=0.8\n"
     "                            --set impactor.velocity='5 m/s' --set contacts[0].SOFT=2) and\n"
@@ -225,6 +228,10 @@ int run_application(const std::vector<std::string>& args, std::ostream& out, std
     }
     if (args[0] == "dcb-reduce") return dcb_reduce_command({args.begin() + 1, args.end()}, out, err);
     if (args[0] == "plot") return plot_command({args.begin() + 1, args.end()}, out, err);
+    if (is_keyword_command(args))
+      return keyword_command(args, out, err, [](const std::string& scene, const std::string& dir, std::ostream& o) {
+        return run(scene, dir, Overrides{}, o);
+      });
     if ((args[0] == "run" || args[0] == "check" || args[0] == "mesh") && args.size() >= 2) {
       std::string out_dir;
       Overrides overrides;

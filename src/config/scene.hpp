@@ -101,10 +101,20 @@ struct BoxSpec {
   SourceLocation where;
 };
 
+// A volume mesh read from a gmsh .msh file (mesh: {file, length_unit}) instead of boxes or a
+// laminate: hexahedra of each physical volume form the part of that name (or, unnamed, of that id);
+// physical surfaces and points give node sets (NodeSetSpec::Kind::Generated, "from_mesh").
+struct MeshFileSpec {
+  std::string path;          // as resolved against the scene file's folder
+  double length_scale = 1;   // m per coordinate unit of the file (mesh.length_unit)
+  SourceLocation where;
+};
+
 // Node selection. Exactly one of the selectors is used.
 struct NodeSetSpec {
   // Generated: the nodes are listed by the mesh generator (mesh::Mesh::node_sets, same name), e.g.
-  // a laminate's supports and symmetry planes, which select exact grid lines rather than regions.
+  // a laminate's supports and symmetry planes, which select exact grid lines rather than regions,
+  // or a physical group of a mesh file.
   enum class Kind { Box, Plane, Part, All, Generated };
   std::string name;
   Kind kind = Kind::All;
@@ -271,6 +281,7 @@ struct Scene {
   std::vector<PartSpec> parts;
   std::vector<BoxSpec> boxes;
   bool merge_coincident_nodes = true;  // mesh.merge_nodes: boxes sharing a face share its nodes
+  std::optional<MeshFileSpec> mesh_file;  // mesh.file: read by mesh/msh_reader
   std::vector<NodeSetSpec> node_sets;
   std::vector<BoundaryConditionSpec> boundary_conditions;
   std::vector<InitialVelocitySpec> initial_velocities;

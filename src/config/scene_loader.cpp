@@ -272,9 +272,35 @@ std::vector<PartSpec> read_parts(const Reader& r, const Scene& scene) {
 
 // ---------------------------------------------------------------- mesh
 
+// mesh: {file: model.msh, length_unit: mm}: coordinates in length_unit (default: the scene's).
+MeshFileSpec read_mesh_file(const Reader& r, const detail::Context& ctx) {
+  MeshFileSpec spec;
+  spec.where = r.at("file", "").where();
+  const std::string file = r.at("file", "a path to a gmsh .msh file (relative to the scene file)").as_name();
+  const auto folder = std::filesystem::path(ctx.file).parent_path();
+  spec.path = (std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : folder / file).string();
+  spec.length_scale = ctx.unit_system.length;
+  if (const auto lu = r.find("length_unit")) {
+    lu->require_scalar("a length unit (m, mm, ...)");
+    try {
+      const auto unit = u::parse_unit(lu->node().Scalar());
+      if (!(unit.dim == u::length)) lu->fail("not a length unit", "a length unit (m, mm, ...)");
+      spec.length_scale = unit.factor;
+    } catch (const u::UnitError& e) {
+      lu->fail(e.problem(), e.allowed());
+    }
+  }
+  return spec;
+}
+
 std::vector<BoxSpec> read_mesh(const Reader& r, const Scene& scene) {
-  r.require_map("a mapping with 'boxes'");
-  r.allow_keys({"boxes", "merge_nodes"});
+  r.require_map("a mapping with 'boxes' or 'file'");
+  r.allow_keys({"boxes", "merge_nodes", "file", "length_unit"});
+  if (r.exactly_one({"boxes", "file"}) == "file") {
+    if (r.has("merge_nodes")) r.at("merge_nodes", "").fail("merge_nodes applies to boxes only", "file without merge_nodes");
+    return {};
+  }
+  if (r.has("length_unit")) r.at("length_unit", "").fail("length_unit applies to a mesh file only", "boxes without length_unit");
   const Reader boxes = r.at("boxes", "a list of boxes {part, origin, size, elements}");
   boxes.require_list("a list of boxes {part, origin, size, elements}", true);
   const auto parts = names_of(scene.parts);
@@ -320,7 +346,13 @@ std::vector<NodeSetSpec> read_node_sets(const Reader& r, const Scene& scene) {
     spec.name = name;
     spec.where = s.where();
     if (s.node().IsScalar()) {
-      if (s.node().Scalar() != "all") s.fail("unknown node selector", selectors);
+      if (scene.mesh_file && s.node().Scalar() == "from_mesh") {  // the mesh file's physical group of this name
+        spec.kind = NodeSetSpec::Kind::Generated;
+        out.push_back(std::move(spec));
+        continue;
+      }
+      if (s.node().Scalar() != "all")
+        s.fail("unknown node selector", scene.mesh_file ? std::string(selectors) + ", or from_mesh" : selectors);
       spec.kind = NodeSetSpec::Kind::All;
       out.push_back(std::move(spec));
       continue;
@@ -675,9 +707,10 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
   if (const auto mesh = root.find("mesh")) {
     if (laminate) mesh->fail("mesh.boxes and laminate cannot be combined", "either mesh (boxes) or laminate");
     scene.boxes = read_mesh(*mesh, scene);
-    scene.merge_coincident_nodes = read_merge_nodes(*mesh);
+    if (scene.boxes.empty()) scene.mesh_file = read_mesh_file(*mesh, ctx);
+    else scene.merge_coincident_nodes = read_merge_nodes(*mesh);
   } else if (!laminate) {
-    root.at("mesh", "a mapping with 'boxes' (or a laminate section)");
+    root.at("mesh", "a mapping with 'boxes' or 'file' (or a laminate section)");
   }
   if (laminate) detail::read_laminate(*laminate, scene);
   if (impactor) detail::read_impactor(*impactor, scene);

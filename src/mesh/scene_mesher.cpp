@@ -8,11 +8,12 @@
 #include "mesh/gmsh_session.hpp"
 #include "mesh/impactor_mesher.hpp"
 #include "mesh/laminate_mesher.hpp"
+#include "mesh/msh_reader.hpp"
 
 namespace plyimpact::mesh {
 
 Mesh mesh_scene(const config::Scene& scene) {
-  Mesh m = scene.laminate ? mesh_laminate(scene) : mesh_boxes(scene);
+  Mesh m = scene.mesh_file ? read_msh(scene) : scene.laminate ? mesh_laminate(scene) : mesh_boxes(scene);
   if (scene.impactor) add_impactor(scene, m);
   return m;
 }
@@ -31,12 +32,14 @@ void write_msh(const config::Scene& scene, const Mesh& mesh, const std::string& 
     std::vector<std::size_t> tags(mesh.num_nodes());
     std::iota(tags.begin(), tags.end(), std::size_t(1));
     gm::mesh::addNodes(3, nodes_entity, tags, mesh.coords);
-    std::size_t next_element = 1;
+    // Hexahedron e has tag e + 1, so a reader that orders by tag (mesh/msh_reader) gets the
+    // elements back in their original order.
+    std::size_t next_element = mesh.num_elements() + 1;
     for (std::size_t p = 0; p < scene.parts.size(); ++p) {
       std::vector<std::size_t> etags, enodes;
       for (std::size_t e = 0; e < mesh.num_elements(); ++e) {
         if (mesh.element_part[e] != int(p)) continue;
-        etags.push_back(next_element++);
+        etags.push_back(e + 1);
         for (int k = 0; k < 8; ++k) enodes.push_back(std::size_t(mesh.hex[8 * e + k]) + 1);
       }
       if (etags.empty()) continue;
@@ -59,6 +62,18 @@ void write_msh(const config::Scene& scene, const Mesh& mesh, const std::string& 
       add_quads(itf.lower_segments, 0, "interface_" + std::to_string(itf.id) + "_lower");
       add_quads(itf.upper_segments, 0, "interface_" + std::to_string(itf.id) + "_upper");
     }
+    // Generated node sets (supports, symmetry planes) as physical groups of points, one point
+    // element per node, so a scene read from this file can name them (`from_mesh`).
+    for (const auto& set : mesh.node_sets) {
+      std::vector<std::size_t> etags, enodes;
+      for (Index n : set.nodes) {
+        etags.push_back(next_element++);
+        enodes.push_back(std::size_t(n) + 1);
+      }
+      const int pt = gm::addDiscreteEntity(0);
+      gm::mesh::addElementsByType(pt, 15, etags, enodes);  // 15 = 1-node point
+      gm::setPhysicalName(0, gm::addPhysicalGroup(0, {pt}), set.name);
+    }
     if (mesh.impactor && mesh.impactor->rigid) {
       const auto& imp = *mesh.impactor;
       const int s = gm::addDiscreteEntity(2);
@@ -68,6 +83,9 @@ void write_msh(const config::Scene& scene, const Mesh& mesh, const std::string& 
       add_quads(imp.surface_quads, mesh.num_nodes(), "impactor_rigid_surface");
     }
     gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    // Binary: coordinates exactly as computed (gmsh's ASCII writer prints 16 significant digits,
+    // which does not always round-trip a double), so a scene run from the file matches the original.
+    gmsh::option::setNumber("Mesh.Binary", 1);
     gmsh::write(path);
   });
   if (!std::filesystem::exists(path, ec)) throw RunError(msg() << path << ": gmsh did not write the .msh file");

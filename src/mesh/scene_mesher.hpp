@@ -1,5 +1,5 @@
 // The mesh of a whole scene, whatever generates it: the box generator (Scene::boxes), or the gmsh
-// laminate mesher plus the impactor (Scene::laminate, Scene::impactor).
+// laminate mesher, or a .msh file (Scene::mesh_file), plus the impactor (Scene::impactor).
 #pragma once
 
 #include <string>
@@ -12,8 +12,10 @@ namespace plyimpact::mesh {
 /// @throws InputError
 Mesh mesh_scene(const config::Scene& scene);
 
-/// Writes `mesh` as a gmsh .msh file (format 4.1): one physical volume per part, one physical
-/// surface per interface side ("interface_<id>_lower"/"_upper") and the rigid impactor's surface.
+/// Writes `mesh` as a binary gmsh .msh file (format 4.1, coordinates in m): one physical volume per part
+/// (hexahedron e has element tag e + 1), one physical surface per interface side
+/// ("interface_<id>_lower"/"_upper"), one physical point group per generated node set and the rigid
+/// impactor's surface. mesh/msh_reader reads it back.
 /// @throws RunError if the file cannot be written.
 void write_msh(const config::Scene& scene, const Mesh& mesh, const std::string& path);
 
