@@ -1,6 +1,6 @@
-// *MAT_054 / *MAT_055 (*MAT_ENHANCED_COMPOSITE_DAMAGE): every field of the LS-DYNA card (theory.md
+// *MAT_054 / *MAT_055 (*MAT_ENHANCED_COMPOSITE_DAMAGE): every field of the LS-DYNA card (docs/theory.md section 7;
 // section 6.1; seed Figure 7.3), under its card name, in SI. Defaults are the card defaults
-// (theory-addendum 2.1): SOFT 1, YCFAC 2, CRIT 54, SOFT2 1, SOFTG 1; every other field blank = 0.
+// (the card field texts): SOFT 1, YCFAC 2, CRIT 54, SOFT2 1, SOFTG 1; every other field blank = 0.
 // TSMD has no card default; its 0.90 is applied inside the material (material/composite_damage),
 // so 0 here means "internal default". Nothing here depends on yaml-cpp.
 #pragma once
@@ -25,7 +25,7 @@ struct MatCompositeDamage {
   double XP = 0, YP = 0, ZP = 0;
   double DFAILM = 0, DFAILS = 0;  // matrix strain (|eps_bb|), tensorial shear strain (|gamma_ab|/2)
   // Card 5. TFAIL: <= 0 off; (0, 0.1] absolute element step limit (s); > 0.1 ratio dt/dt0
-  // (theory-addendum 2.2). ALPH: nonlinear shear term (Pa^-3). DFAILC is negative.
+  // (the card field texts). ALPH: nonlinear shear term (Pa^-3). DFAILC is negative.
   double TFAIL = 0, ALPH = 0, SOFT = 1, FBRT = 0, YCFAC = 2, DFAILT = 0, DFAILC = 0, EFS = 0;
   // Card 6. Strengths entered positive (Pa). BETA: weight of shear in the fibre-tension criterion
   // (NOT the material angle, which is MANGLE).

@@ -29,10 +29,10 @@ long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHis
   // Nodes of the segment of the last pass (-1: none). A node in contact slides from its segment to
   // a neighbour (one sharing a node with it) at the depth it has: the neighbour accepts the node's
   // depth at the last pass plus the one-step catch depth. With the catch depth alone a node pressed
-  // deeper was released at every segment boundary it slid across (Hertz: the contact area grows
-  // under the sphere); with the full release depth a node lifting off a top face beside an eroded
-  // hole was caught by the hole's side face (which shares the edge) at its distance from the edge,
-  // a spring from nothing that pushed the bodies apart (energy created).
+  // deeper would be released at every segment boundary it slides across (the contact area grows
+  // under a sphere); with the full release depth a node lifting off a top face beside an eroded
+  // hole would be caught by the hole's side face (which shares the edge) at its distance from the
+  // edge, a spring from nothing (tests ContactPersistence, HoleEdge).
   Index ln[4] = {-1, -1, -1, -1};
   const double last_depth = last >= 0 ? std::max(-springs.gap[i], 0.0) : 0.0;
   if (last >= 0)
@@ -131,7 +131,7 @@ long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHis
     if (exposure && g <= -accept_catch && (std::abs(pr.xi) > 1 || std::abs(pr.eta) > 1)) return;
     // The catch depth above bounds the relative motion by the fastest contact node anywhere (one
     // number for the sphere tests); a flying fragment then lets a slow node be caught tens of um
-    // deep, a spring nobody compressed (0.06 J each in the default scene). The node can only have
+    // deep, a spring nobody compressed. The node can only have
     // crossed this segment by its own and the segment nodes' motion in the step.
     if (v != nullptr && s != last && !exposure) {  // a neighbour switch or a new contact
       double vq2 = 0;

@@ -1,4 +1,4 @@
-// The penalty contact's acceptance rules (theory.md section 8): which segment of the search's
+// The penalty contact's acceptance rules (docs/theory.md section 10): which segment of the search's
 // candidates a contact node is in contact with in this pass, given its spring of the last pass.
 // A node penetrates a segment when it projects onto it (MAXPAR) with its own surface facing the
 // segment and its gap g = n . (x_s - x_c) - offset lies in (-depth, 0), where depth is

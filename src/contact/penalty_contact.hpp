@@ -1,4 +1,4 @@
-// Penalty contact, node to segment (theory.md section 8): automatic (two-way) surface-to-surface
+// Penalty contact, node to segment (docs/theory.md section 10): automatic (two-way) surface-to-surface
 // contact between two sets of parts, or single-surface contact of one set with itself; both with
 // the ERODING_ option (the surface is rebuilt from the exposed faces when elements are deleted).
 // Orchestration over the contact toolkit:

@@ -1,4 +1,4 @@
-// The penalty law of a node-segment pair (theory.md section 8), as pure functions of the pair's
+// The penalty law of a node-segment pair (docs/theory.md section 10), as pure functions of the pair's
 // data: no search, no history beyond the friction force handed in.
 //   stiffness : SOFT 0  k = min(k_node, k_seg), k_seg = SLSFAC SF K A^2 / V (PENOPT 1; segment set)
 //               SOFT 1  k = max(SOFT 0 value, SOFSCL 0.5 m* / dt_c^2), m* = min(node, segment mass)

@@ -1,4 +1,4 @@
-// Node-to-segment search over a segment set (theory.md section 8): bucket sort of each side's
+// Node-to-segment search over a segment set (docs/theory.md section 10): bucket sort of each side's
 // segments (contact/bucket_grid), re-sorted every BSORT cycles or when a force node has moved a
 // quarter of the list allowance; per contact node a candidate list (the segments it can reach
 // before the next sort, in bucket order); per segment a hot record refreshed at most once per pass

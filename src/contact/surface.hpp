@@ -1,6 +1,6 @@
 // Contact surfaces from solid elements: the faces of a set of hexahedral blocks that are not shared
 // by two active elements of the set (the exterior, and after erosion also the newly exposed
-// faces; theory.md section 8.7, EROSOP = 1). Face adjacency is found once by sorting the faces'
+// faces; docs/theory.md section 10, EROSOP = 1). Face adjacency is found once by sorting the faces'
 // node quadruples; a rebuild after element deletion is then one pass over the faces.
 // Faces are quads in LS-DYNA/VTK order with the outward normal t_xi x t_eta.
 #pragma once

@@ -3,7 +3,7 @@
 // manual, hourglass control IHQ 6): the lane force update of the one-point element pass, and,
 // once per element at t = 0, the elastic moduli its hourglass strains are multiplied with.
 //
-// Our choice (per-mode moduli, documented in README "Hourglass control on thin plies"): every
+// Our choice (per-mode moduli, documented in docs/theory.md section 6): every
 // hourglass strain component of the element frame (x', y', z' = the orthonormalised centre-Jacobian
 // columns, see element_frame) gets the modulus of a uniaxial stress along that axis (normal
 // components: E(n) = 1 / (n n : S : n n)) or of pure shear in that plane (shear components:

@@ -1,12 +1,12 @@
 // *MAT_054 / *MAT_055 material point. See composite_damage.hpp.
 //
-// Choices where the sources are ambiguous (theory.md section 12 item 8, theory-addendum 2.2):
+// Choices where the sources are ambiguous (docs/theory.md section 7):
 //  1. Degradation as stress limits. Every degraded in-plane component (aa, bb, ab) lives in a box
 //     [lo, hi]: intact (-inf, inf); removed [0, 0]; residual limit on the failed side only. The
 //     trial stress uses the undamaged stiffness and is projected onto the box by the normal-stress
 //     return C_JJ dp_J = trial_J - bound_J (J = violated normal components). For a removed
 //     component this is exactly the reduced stiffness of the degradation table (the Schur
-//     complement, i.e. E = 0 and the nu involving it = 0, theory.md 6.4), and the coupled stresses
+//     complement, i.e. E = 0 and the nu involving it = 0, as the card's degradation table), and the coupled stresses
 //     (bb, cc) lose their share of the removed one at the moment of failure.
 //  2. Degradation table (6.4): fibre tension removes aa, bb and ab (the ply carries no in-plane
 //     load); fibre compression removes aa; matrix tension or compression removes bb and ab. A
@@ -20,7 +20,7 @@
 //     drop happens in the failure cycle. A removed component is removed once the ramp ends.
 //  5. The ab limit starts at the first matrix failure (either sign) and uses SLIMS x SC.
 //  6. Criteria (composite_damage_criteria): evaluated on the stress after the existing limits,
-//     at the end of the cycle; sigma_aa = 0 counts as tension (theory.md: sigma_aa >= 0), so with
+//     at the end of the cycle; sigma_aa = 0 counts as tension (as the card's criteria: sigma_aa >= 0), so with
 //     BETA = 1 pure shear meets the fibre-tension criterion at SC as well. The ALPH shear ratio
 //     tau_bar of MAT_022 enters every criterion (MAT_022 text), not only matrix tension (OR127).
 //     CRIT 55 failure sets e_m for sigma_bb >= 0 and e_d (with FBRT/YCFAC) for sigma_bb < 0.
@@ -42,7 +42,7 @@
 //     DFAILS act only when DFAILT > 0 (DC054). Strains are the totals in material axes.
 // 12. EFS > 0: eps_eff = sqrt(4/3 (e_aa^2 + e_bb^2 + e_cc^2 + e_aa e_bb + e_bb e_cc + e_cc e_aa +
 //     e_ab^2 + e_bc^2 + e_ca^2)) with tensor shears (OR127's 3D form; the in-plane form of
-//     theory.md 6.5 when the c components vanish).
+//     its in-plane form when the c components vanish).
 // 13. TFAIL: <= 0 off; (0, 0.1] element step < TFAIL; > 0.1 element step / initial step < TFAIL.
 // 14. Crashfront: once ctx.crashfront is seen the point stays a crashfront point; with TFAIL > 0,
 //     XT, XC, YT, YC, SC are multiplied by SOFT and GBC, GCA by SOFTG (SOFTG gated like SOFT).

@@ -1,4 +1,4 @@
-// Failure criteria of *MAT_054 / *MAT_055 (theory.md section 6.3) as pure functions of the in-plane
+// Failure criteria of *MAT_054 / *MAT_055 (docs/theory.md section 7) as pure functions of the in-plane
 // stresses in material axes. Each value is LS-DYNA's e^2: the criterion minus 1, so >= 0 means the
 // mode has failed. A mode whose stress sign does not apply (fibre tension with sigma_aa < 0, ...)
 // gets -1, the value of an unloaded mode.

@@ -1,4 +1,4 @@
-// Laminated plate -> structured ply-by-ply hex mesh with gmsh (issue 3). gmsh's built-in kernel
+// Laminated plate -> structured ply-by-ply hex mesh with gmsh. gmsh's built-in kernel
 // builds a patch layout in the plane z = 0 (patches cut at the refined zone and the support
 // window), transfinite + recombined, and one extrusion per ply with `elements_per_ply` layers
 // (toolchain recipe). Node coordinates are then snapped to the exact 1-D distributions of

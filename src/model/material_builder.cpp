@@ -92,7 +92,7 @@ Material make_material(const config::MaterialSpec& spec) {
     m.density = cd->RO;
     m.composite = composite_damage_params(*cd, spec.where);
     m.c_material = m.composite.C;
-    m.wave_modulus = m.composite.wave_modulus;  // undamaged stiffness, as LS-DYNA (theory.md 1.2)
+    m.wave_modulus = m.composite.wave_modulus;  // undamaged stiffness, as LS-DYNA (docs/theory.md section 2)
     m.bulk_modulus = reuss_bulk_modulus(*cd, m.wave_modulus);
     m.axes = material_axes_of(cd->axes);
     if (m.axes.AOPT != 3 && m.axes.BETA != 0.0)

@@ -1,6 +1,6 @@
 // Rigid bodies, rigid walls, contacts and gravity: the part of build_model that turns the scene's
 // rigid_bodies / rigid_walls / contacts sections and MAT_020 parts into model data. Mass
-// properties of an element-based rigid body follow theory.md section 7.3: M = sum m_k,
+// properties of an element-based rigid body follow docs/theory.md section 9: M = sum m_k,
 // x_cm = sum m_k x_k / M, I = sum m_k (|r_k|^2 1 - r_k (x) r_k) over its lumped nodal masses.
 #include <Eigen/Dense>
 #include <algorithm>

@@ -39,7 +39,7 @@ inline double step_q(double L, double c, double trD, double q1, double q2, doubl
 
 // Artificial bulk viscosity pressure (compression only), LS-DYNA default form
 // q = rho l (Q1 l trD^2 - Q2 c trD), but with the step's characteristic length l = L = V / A_max
-// where theory.md 1.4 (after the LS-DYNA TM) has l = V^(1/3); the two agree for a cube. Why: on
+// where the LS-DYNA Theory Manual has l = V^(1/3); the two agree for a cube. Why: on
 // the element's thickness mode (omega = 2c/L) q is an explicit damper of ratio
 // xi = (l/L)(Q2 + Q1 l |trD| / c), and the step above is stable only for l = L. With l = V^(1/3) a
 // flat element (aspect A, l/L = A^(2/3)) is damped far harder than the step allows: the Hertz

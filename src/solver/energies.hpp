@@ -1,7 +1,7 @@
 // Global energy balance at one time, as a named list: the integrator's own terms (kinetic, internal,
 // hourglass, bulk viscous, external work) followed by those of the force contributors (contact,
 // friction, rigid wall, interfaces ...). The balance check, history.csv and summary.json all read
-// this list, so a new energy appears in all three by being named once (theory.md section 10.2:
+// this list, so a new energy appears in all three by being named once (docs/theory.md section 11:
 // sliding energy with SLNTEN = 2, rigid-wall energy with RWEN = 2).
 //   total = sum of the terms counted in the total (in list order)
 //   ratio = total / (initial total + external work), 1 for a perfect balance

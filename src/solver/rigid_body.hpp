@@ -1,4 +1,4 @@
-// Rigid bodies (*MAT_020 parts and the meshed rigid impactor), theory.md section 7.3. Each body's
+// Rigid bodies (*MAT_020 parts and the meshed rigid impactor), docs/theory.md section 9. Each body's
 // nodes are slaved to it. One cycle, after the nodal update:
 //   F = sum f_k,  M = sum r_k x f_k            (f: all forces at t^n, contact included)
 //   v_cm^{n+1/2} = v_cm^{n-1/2} + dt^n F / m,   H^{n+1/2} = H^{n-1/2} + dt^n M   (global frame)

@@ -1,10 +1,9 @@
 // A face that erosion exposes already behind a node (contact/penalty_contact, apply): nothing
-// crossed anything, so no spring may appear with the depth found there. Mechanism (default scene,
-// 1.385 ms): plies erode under the tup, the rebuilt surface has new faces, and a tup node already
-// 23 um behind one of them was caught as a new contact (the one-step catch depth grows with the
-// fastest contact node, here a flying fragment) with a 5.7 kN spring: 0.13 J from nowhere in one
-// step, energy ratio 1.000 -> 1.005. Such penetrations are now kept as offsets, like initial
-// penetrations: the force starts from zero and grows with further penetration.
+// crossed anything, so no spring may appear with the depth found there. When plies erode under an
+// impactor, the rebuilt surface has new faces, and an impactor node already tens of um behind one
+// of them would, taken as a new contact, get a spring nobody compressed (energy from nowhere in
+// one step). Such penetrations are kept as offsets, like initial penetrations: the force starts
+// from zero and grows with further penetration.
 //
 // Scene: a steel base (3 x 3 x 2 elements of 1 mm) and a small steel punch inside its top middle
 // element, 0.9 mm wide in x and reaching 5 um past the element's -x face, moving at 1 m/s towards

@@ -68,8 +68,8 @@ TEST(HoleEdge, NodeLiftingOffBesideAHoleIsNotCaughtByItsSideFace) {
   std::cout << "release bound " << release_bound << " J\n";
   EXPECT_GT(e_min, -release_bound);
   // Energy conserved within 1 % (as for the head-on blocks, test_penalty_contact.cpp: the
-  // penalty springs are booked to second order in dt); before the fix the spurious side-face
-  // spring (0.1 mm deep at k ~ 2e7 N/m, ~ 0.1 J) created energy many times the 1.3e-4 J impact energy.
+  // penalty springs are booked to second order in dt); a side-face spring caught 0.1 mm deep
+  // (k ~ 2e7 N/m, ~ 0.1 J) would create energy many times the 1.3e-4 J impact energy.
   EXPECT_LT(ratio_max, 1.01);
   EXPECT_GT(ratio_min, 0.99);
 }

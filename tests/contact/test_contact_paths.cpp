@@ -3,7 +3,7 @@
 //    m_i = rho_i h^3 / 2, half the element's) pressed delta = 1e-3 h into each other with
 //    DTSTIF, SLSFAC, SFS and SFM all set. Every node of the two facing faces penetrates the other
 //    face at a corner by delta (both passes), so the force on the upper cube is
-//    4 delta (k_A + k_B), k_A,B = 0.5 SLSFAC {SFS, SFM} m1 m2 / (m1 + m2) / DTSTIF^2 (theory.md
+//    4 delta (k_A + k_B), k_A,B = 0.5 SLSFAC {SFS, SFM} m1 m2 / (m1 + m2) / DTSTIF^2 (docs/theory.md section 10
 //    section 8.2). One pass, no time integration: to round-off (1e-12).
 //  - ENMASS 1: eroding contact, a punch of three elements falls onto a base; one punch element is
 //    deleted, which leaves four nodes without elements. With ENMASS 1 they stay in contact as mass

@@ -6,9 +6,10 @@
 //    neighbour segment it slides onto is not a new contact. Reference: statics, the mean contact
 //    force on the block equals its weight m g (frictionless, so the sliding does not change it),
 //    and the block does not sink: its height stays at the settled value (the penalty springs carry
-//    the same load at every position). Before the fix every node was released at the first
-//    boundary it crossed (the penetration, ~0.1 mm here, is deeper than the one-step depth,
-//    2 dt (v + v_max) + 2 % of the release depth, ~ 0.06 mm) and the block fell through the plate.
+//    the same load at every position). With the one-step catch depth alone every node would be
+//    released at the first boundary it crosses (the penetration, ~0.1 mm here, is deeper than the
+//    one-step depth, 2 dt (v + v_max) + 2 % of the release depth, ~ 0.06 mm) and the block would
+//    fall through the plate.
 //  - Erosion elsewhere: the eroding contact rebuilds its surfaces (new segment numbers); a node
 //    pressed into a surviving segment keeps its spring. Reference: the same state before and after
 //    the rebuild gives the same force (nothing about the pressed nodes changed).

@@ -1,4 +1,4 @@
-// Hertz impact (theory.md section 11 item 7; issue 4, verification item 2): a rigid sphere (MAT_020)
+// Hertz impact: a rigid sphere (MAT_020)
 // of radius R and mass m hits a thick elastic MAT_001 block at v0. Reference (Johnson, Contact
 // Mechanics, 1985, section 11.4; quasi-static Hertz contact of a rigid sphere on an elastic
 // half-space, E* = E / (1 - nu^2)):
@@ -13,31 +13,19 @@
 // shell over the block's own fine grid (r <= 1.25 a), its mass set to m / 4 (quarter), x, y and
 // the rotations fixed by symmetry. The block (ELFORM 1 with IHQ 3, Flanagan-Belytschko viscous
 // hourglass control: the stiffness forms IHQ 4/5 make the graded mesh's long thin elements too
-// stiff, IHQ 5 gave +7 % on F_max at a/h = 12; one-point elements cost several times less than ELFORM 2,
-// which this test used before at 80 s; errors at a/h = 12 went from +1.1 / -2.2 / -0.1 % with
-// ELFORM 2 to +1.4 / -2.7 / +0.1 % for d_max / F_max / t_c, and are +0.9 / -2.6 / -0.2 % since the
-// bulk-viscosity fix at TSSFAC 0.9, well inside the tolerance below) is a
+// stiff, IHQ 5 gives +7 % on F_max at a/h = 12; one-point elements cost several times less than ELFORM 2
+// for errors of the same size) is a
 // tensor-product grid: uniform h over 1.25 a laterally and 0.75 a in depth (the Hertz stress
 // field), graded by 1.5 per element out to L = 24 a; bottom fixed, sides free. Meshes: h = a/3,
 // a/6, a/12 (3, 6, 12 elements across the contact radius a).
 // Contact: automatic surface to surface, SOFT 0, SLSFAC 0.5 (the default 0.1 is a robustness
 // choice, not an accuracy one). Time step: the solver combines the element step with the active
 // contact springs (solver.cpp, combined_step); the approach runs at the element step. TSSFAC 0.9
-// (LS-DYNA's default). It used to need 0.7: at a/h = 12, 0.8 and 0.9 blew up about 1 us into
-// contact, with any contact stiffness and with ELFORM 2. Not in the contact zone: the first nodes
-// to diverge were at the block's far top corner (x = y = 33 mm), in the 10.8 x 10.8 x 0.083 mm
-// elements where the lateral grading meets the uniform top layers (aspect 130), their thickness
-// mode growing ~1.5 x per cycle from the noise the contact's numerical precursor brought there.
-// The bulk viscosity used the length V^(1/3) = 2.13 mm = 25.6 L (L = V / A_max, the thickness),
-// which damps that mode at xi = Q2 x 25.6 = 1.54, while the element step L / (Q + sqrt(Q^2 + c^2)),
-// Q = Q2 c, is the central-difference limit (L/c)(sqrt(1 + xi^2) - xi) only for xi = Q2: for
-// xi = 1.54 the limit is 0.30 L/c (explicit viscous damping lowers the stable step). xi grows with
-// the refinement (0.52, 0.90, 1.54 at a/h = 3, 6, 12: the outer elements keep their size while the
-// top layers thin), so only the finest mesh failed. With Q2 = 0 the run passed that point.
-// Fix: the bulk viscosity uses L (solver/element_step.hpp, bulk_viscosity; identical for
-// cubes), checked by tests/core/test_bulk_viscosity_step.cpp. ELFORM 2 at a/h = 12 still needs
-// 0.7: at 0.8 and 0.9 it now gains energy in the contact zone from ~4 us, stopped at ~12 us (see
-// the README, contact section); ELFORM 1 / IHQ 3 is what this test uses.
+// (LS-DYNA's default). The graded block has elements of aspect 130 where the lateral grading
+// meets the uniform top layers; they are stable at 0.9 because the bulk viscosity uses the step's
+// length L = V / A_max (docs/theory.md section 3; tests/core/test_bulk_viscosity_step.cpp): with
+// V^(1/3) their thickness mode would be damped at xi = 1.54, whose explicit limit is 0.30 L/c.
+// ELFORM 2 at a/h = 12 still needs TSSFAC 0.7 (it gains energy in the contact zone at 0.8-0.9).
 //
 // Measured: indentation d = approach of the sphere since its pole reached the block's top surface
 // (relative to the fixed base), contact force F = 4 x the z contact force on the quarter sphere,

@@ -86,7 +86,7 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_SoftOneGoverning, HeadOn, ::testing::Values("S
 // automatic surface-to-surface contact. Only the cube's four bottom nodes meet a segment (the plate's top
 // corners lie outside the cube's face), each with its own spring
 //   k1 = 0.5 SOFSCL m* / DTSTIF^2,  m* = min(node mass M / 8, the plate's node masses) = M / 8
-// (theory.md 8.2, FAQ-SOFT1), here 4.4e6 N/m; the SOFT 0 stiffness of the same pair (the E of the
+// (docs/theory.md section 10), here 4.4e6 N/m; the SOFT 0 stiffness of the same pair (the E of the
 // MAT_020 card is set low, 1 GPa; PENOPT 1 takes the smaller of node and segment) is about 2e5 N/m,
 // so k1 governs by far. The plate (E A / h = 3.8e9 N/m) is 200 times stiffer than the four springs
 // together: in series it lowers the frequency by 0.25 %. The cube is then a mass on four parallel

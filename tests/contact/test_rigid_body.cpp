@@ -28,7 +28,7 @@ std::string scene(const std::string& card_extra, const std::string& extra) {
 
 // Lumped-mass sums over a uniform grid of n elements along an edge of length a (node weights h/2
 // at the ends, h inside): sum m x^2 / M about the centre is the trapezoid rule for x^2,
-// a^2 / 12 (1 + 2 / n^2). theory.md: the rigid body is the sum of its lumped nodal masses.
+// a^2 / 12 (1 + 2 / n^2). docs/theory.md section 9: the rigid body is the sum of its lumped nodal masses.
 double lumped_square(double a, int n) { return a * a / 12 * (1 + 2.0 / (n * n)); }
 
 // Body box 0.01 x 0.02 x 0.03 m, elements 1 x 2 x 3, steel: hand values to round-off (1e-12).

@@ -1,5 +1,5 @@
-// Bulk viscosity and the stable step on flat elements (the cause of the Hertz test's instability at
-// TSSFAC 0.8-0.9 on its finest mesh, test_hertz_impact.cpp).
+// Bulk viscosity and the stable step on flat elements (the Hertz test's graded block has elements
+// of aspect 130, test_hertz_impact.cpp).
 //
 // One hex of thickness t and side A = aspect x t, every node fixed in x and y, z free: its only
 // motion is the thickness mode u = w_top - w_bottom, eps_zz = u / t, sigma_zz = M eps_zz with the
@@ -8,9 +8,9 @@
 // In compression the bulk viscosity q = rho l (Q1 l trD^2 - Q2 c trD) with trD = du/dt / t (Q1 = 0
 // here) is a damper: mu u'' + k u + rho l Q2 c A u' = 0, i.e. damping ratio xi = Q2 l / t.
 // LS-DYNA's step L / (Q + sqrt(Q^2 + c^2)), Q = Q2 c, is the exact central-difference limit
-// (2/omega)(sqrt(1 + xi^2) - xi) of this mode only for xi = Q2, i.e. l = L = t. The solver used
-// l = V^(1/3) = aspect^(2/3) t: xi = 1.54 on the Hertz block's 130:1 corner elements, whose limit
-// is then 0.30 t/c, and the run blew up there (far from the contact) once noise reached them.
+// (2/omega)(sqrt(1 + xi^2) - xi) of this mode only for xi = Q2, i.e. l = L = t. With
+// l = V^(1/3) = aspect^(2/3) t, xi would be 1.54 on a 130:1 element, whose limit is then 0.30 t/c:
+// the solver uses l = L.
 //
 // Checks:
 //  1. Damping ratio (independent answer: the damped oscillator). Closing at v0 from u = 0, the
@@ -29,7 +29,7 @@
 //     amplitude over the last 200 of 3000 cycles below 1e-6 of the first 200. The energy guard is
 //     off: with the whole energy in one mode at omega dt = 1.67 the balance's kinetic energy (from
 //     the mean of the half-step velocities) swings by 1 / (1 - (omega dt / 2)^2) ~ 3 while stable.
-//     Before the fix the 130:1 element blew up within a few dozen cycles.
+//     With l = V^(1/3) the 130:1 element diverges within a few dozen cycles.
 #include <gtest/gtest.h>
 
 #include <algorithm>

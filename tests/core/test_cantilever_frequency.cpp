@@ -218,7 +218,7 @@ TEST(CantileverFrequency, ConvergesAtSecondOrderToBeamTheory) {
 }
 
 // IHQ 6 (assumed-strain hourglass control, QM 1) with ONE element through the depth and the width,
-// the README's thin-ply case: 4, 8, 16 elements along (aspect 5:1, 2.5:1, 1.25:1), where IHQ 4/5
+// the thin-ply case of docs/theory.md section 6: 4, 8, 16 elements along (aspect 5:1, 2.5:1, 1.25:1), where IHQ 4/5
 // give f/f_ref = 5.3 at 5:1 and ELFORM 2 3.5. The hourglass strains of a rectangular element bend
 // it exactly (hourglass/assumed_strain.hpp, uniaxial modulus, PR = 0 here anyway), so the
 // element behaves like a linear Timoshenko beam element with exact bending and one-point shear, and
@@ -229,12 +229,10 @@ TEST(CantileverFrequency, ConvergesAtSecondOrderToBeamTheory) {
 // Asserted: after removing (1), the error converges at order 2 (observed 2.02 and 2.10; range
 // [1.7, 2.4], as the (l/L)^4 terms are still ~ 1/4 of the leading ones at 5:1) and the 5:1 error
 // is within 2.5 % (measured -1.76 %, i.e. -0.27 (l/L)^2 with l/L = 1/4, plus the -0.08 %).
-// TSSFAC 0.9 (LS-DYNA's default). It ran at 0.6 until the element step held its bulk-viscosity Q
-// (solver/element_step.hpp, step_q): with Q taken afresh every cycle the step oscillated with the
-// vibration and pumped it, and the 4 x 1 x 1 and 8 x 1 x 1 cantilevers gained energy at 0.9 (ratio
-// 1.5 after ~1300-2900 cycles; IHQ 4 with QM 0.1 failed after 487). Now measured at 0.9 over
-// 20000 cycles: the discrete energy within 2e-4 (IHQ 6) and 6e-4 (IHQ 4) of its start
-// (test_step_modulation.cpp has the regression case).
+// TSSFAC 0.9 (LS-DYNA's default), which needs the element step to hold its bulk-viscosity Q
+// (solver/element_step.hpp, step_q): with Q taken afresh every cycle the step would oscillate with
+// the vibration and pump it. Measured at 0.9 over 20000 cycles: the discrete energy within 2e-4
+// (IHQ 6) and 6e-4 (IHQ 4) of its start (test_step_modulation.cpp has the focused case).
 TEST(CantileverFrequency, AssumedStrainIHQ6OneElementThroughDepth) {
   const Reference ref = reference_frequency();
   constexpr int kMeshes = 3;

@@ -10,7 +10,7 @@
 //
 // Case: one hex of side t with every node fixed in x and y (as test_bulk_viscosity_step.cpp), so
 // its only motion is the thickness mode, omega = 2 c / t with the wave modulus, exactly the step's
-// L/c bound (no free-corner mode above it, README "Stability"), started closing at v0 (its faces
+// L/c bound (no free-corner mode above it, docs/theory.md section 2), started closing at v0 (its faces
 // at -+v0/2). Independent answer: the discrete energy of the leapfrog scheme,
 //   E* = 1/2 sum m v^{n-1/2} . v^{n+1/2} + IE + BV,
 // with BV the booked bulk-viscous work (trapezoid rule), is conserved by a constant step

@@ -110,7 +110,7 @@ TEST_P(ErosionSolver, Mat003ElementFollowsBilinearLaw) {
 TEST_P(ErosionSolver, BarPulledApartKeepsEnergyBalance) {
   // Ten MAT_003 elements with FS = 2 %: all strain equally, the first to reach FS erodes and the
   // bar separates. Energy (kinetic + internal incl. eroded + hourglass + bulk) must still balance the
-  // work of the pulling velocity: within 1 % (issue 5, test 5).
+  // work of the pulling velocity: within 1 %.
   const model::Model model = test::model_from_yaml(
       pull_scene("{card: MAT_003, RO: 7850, E: 200e9, PR: 0.3, SIGY: 250e6, ETAN: 2e9, FS: 0.02}", 2.0, 2.0e-4, 10,
                  GetParam()),

@@ -1,4 +1,4 @@
-// Stability at high velocity (issue 5): the seed's high-velocity set-up (configs/high_velocity_impact.yaml:
+// Stability at high velocity: the seed's high-velocity set-up (configs/high_velocity_impact.yaml:
 // BMS8-212 *MAT_054 plate, *MAT_003 steel sphere at 500 m/s, eroding contact) runs to its end time
 // without a non-finite value, an inverted element or a collapsing step; plies erode through
 // their strain criteria, the summary names parts and causes, and the energy balance holds: the

@@ -1,5 +1,5 @@
 // *MAT_054 in the solver with the ply rotated 45 degrees about z, one hex8 (ELFORM 1) pulled along
-// global x (issue 5, verification 1, "the same with the ply rotated 45 degrees through AOPT/BETA").
+// global x (the ply rotated 45 degrees through AOPT/BETA).
 // The same ply is given three ways (AOPT 2 with the part angle beta = 45, AOPT 2 with A and D
 // rotated by 45 degrees, AOPT 3 with V = y and MANGLE = 45); they must agree to round-off, and the stress at failure must
 // be the one derived by hand from the Chang-Chang criteria in material axes.

@@ -1,6 +1,6 @@
 // *MAT_054 single point with the ply rotated in the x-y plane: uniaxial sigma_x in global axes
 // (every other global stress zero, the coupling strain gamma_xy free), rotated to the material
-// axes by the test. Checks the off-axis modulus (theory.md section 11 item 5)
+// axes by the test. Checks the off-axis modulus (Jones, Mechanics of Composite Materials, off-axis compliance)
 //   1/Ex = cos^4/E1 + (1/G12 - 2 nu12/E1) sin^2 cos^2 + sin^4/E2,   nu12 = PRBA EA/EB,
 // and the failure load from the criteria with sigma_aa = s c^2, sigma_bb = s s^2, |sigma_ab| = s s c.
 // Tolerances as in test_mat054_single_element.cpp (1e-10 on moduli), failure bracket 1e-7.

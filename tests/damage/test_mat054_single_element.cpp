@@ -1,7 +1,7 @@
-// *MAT_054/055 single material point, driven in material axes (theory.md section 11 item 6).
+// *MAT_054/055 single material point, driven in material axes.
 // Uniaxial stress: the loaded strain component is imposed, the others are solved so that their
 // stresses stay zero, so the loaded stress is E x strain with E = EA, EB or GAB exactly (compliance
-// of theory.md section 5). Failure points are bracketed: intact at (1 - 1e-9) of the analytic
+// of docs/theory.md section 7). Failure points are bracketed: intact at (1 - 1e-9) of the analytic
 // failure strain, failed at (1 + 1e-9). Tolerances:
 //   kRel = 1e-10 on moduli and stresses: the stiffness comes from a 6x6 inverse (round-off ~1e-15
 //     times a condition number ~1e2) and ~100 increments are summed (~1e-14); 1e-10 leaves margin
@@ -127,7 +127,7 @@ TEST(Mat054Matrix, TensionFailsAtYTThenErodesAtDFAILM) {
   const auto m = t800_card_0deg();
   PointDriver d(m);
   d.uniaxial_to(kB, 0.002, 20);
-  expect_rel(-d.strain()[kA] / d.strain()[kB], m.PRBA);  // theory.md 11 item 5: eps_a = -PRBA sigma_b/EB
+  expect_rel(-d.strain()[kA] / d.strain()[kB], m.PRBA);  // eps_a = -PRBA sigma_b/EB
   load_to_failure(d, kB, m.EB, m.YT, H::kMatrixTension);
   expect_all_zero(d);
   EXPECT_EQ(d.flag(H::kMatrixCompression), 1.0);
@@ -142,7 +142,7 @@ TEST(Mat054Matrix, TensionFailsAtYTThenErodesAtDFAILM) {
 TEST(Mat054Matrix, CompressionFailsExactlyAtYC) {
   const auto m = t800_criteria_only();
   PointDriver d(m);
-  // theory.md 6.3: with sigma_ab = 0, e_d = 0 at sigma_bb = -YC.
+  // With sigma_ab = 0, e_d = 0 at sigma_bb = -YC.
   const material::CompositeStrengths s{m.XT, m.XC, m.YT, m.YC, m.SC};
   EXPECT_NEAR(material::composite_criteria(54, m.BETA, 0, m.GAB, s, 0, -m.YC, 0).matrix_compression, 0.0, 1e-15);
   load_to_failure(d, kB, m.EB, -m.YC, H::kMatrixCompression);
@@ -205,7 +205,7 @@ TEST(Mat054Shear, BetaOneMakesPureShearAFibreTensionFailure) {
 }
 
 TEST(Mat054Shear, AlphNonlinearShearConvergesToTheSecantLawAtFirstOrder) {
-  // 2 eps_ab = tau/GAB + ALPH tau^3 (theory.md 6.2) integrated with the explicit tangent: the error
+  // 2 eps_ab = tau/GAB + ALPH tau^3 (docs/theory.md section 7) integrated with the explicit tangent: the error
   // of forward Euler is O(step), so halving the step halves it (ratio 2 within 10 %).
   auto m = t800_criteria_only();
   m.ALPH = 2e-25;  // Pa^-3: doubles the strain at about 0.8 SC

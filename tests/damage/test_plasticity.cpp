@@ -1,7 +1,7 @@
 // *MAT_003 / *MAT_024 at a material point under uniaxial stress (lateral strain rates solved so the
 // lateral stresses vanish). References: linear hardening sigma = SIGY + ETAN (eps - SIGY/E);
 // reverse yield after a stress range of 2 SIGY (kinematic, BETA = 0) or at -sigma_max (isotropic,
-// BETA = 1) (theory.md §11 item 10); Cowper-Symonds yield scaling 1 + (rate/C)^(1/P); MAT_024
+// BETA = 1); Cowper-Symonds yield scaling 1 + (rate/C)^(1/P); MAT_024
 // stress equal to the hardening curve at the current plastic strain (exact segment-wise return).
 #include <gtest/gtest.h>
 

@@ -46,7 +46,7 @@
 // A Richardson fit through the three (h ~ 1/n; orders 1.6 and 1.8) puts the converged values at
 // 21.49 mm and 7.37 mm: the coarse mesh is 0.7 % long and 3.7 % narrow, the fine one 0.4 % and
 // 2.2 %. (The unconfirmed literature values, ~21.4-21.5 mm and ~7.0-7.1 mm, are of that order.)
-// Found on the way (issue 5 work): the stiffness hourglass forms (IHQ 4/5, Flanagan-Belytschko
+// The stiffness hourglass forms (IHQ 4/5, Flanagan-Belytschko
 // scaling with the elastic rho c^2) resist the mushroom far too much in this flow: at QM 0.1 the
 // 840-hex mesh gives 20.28 mm / 4.85 mm (face radius below even the 1-D bound), at QM 0.01 still
 // 21.16 / 6.38 mm, and refining moves the radius by 16 %. The viscous forms IHQ 1-3 agree with
