@@ -139,6 +139,20 @@ long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHis
       const double crossed = 2 * dt * (v_node + std::sqrt(vq2)) + 0.02 * depth;
       if (g <= -std::min(depth, neighbour ? last_depth + crossed : crossed)) return;
     }
+    // Beside the face (inside it only by the MAXPAR margin) and already behind its plane before
+    // this step's motion, deeper than its old spring: the node did not cross this face, it slid
+    // along under its edge (an impactor node in an eroded hole reaching the rim, a few um below the
+    // plane of the face around it). It is not in contact with this face; the hole's wall, if it
+    // meets it, is its contact.
+    if (v != nullptr && s != last && (std::abs(pr.xi) > 1 || std::abs(pr.eta) > 1)) {
+      double vn = 0;
+      for (int d = 0; d < 3; ++d) {
+        double vr = v[3 * std::size_t(node) + d];
+        for (int a = 0; a < 4; ++a) vr -= pr.N[a] * v[3 * std::size_t(q[a]) + d];
+        vn += vr * pr.normal[d];
+      }
+      if (g - vn * dt < (last < 0 ? 0.0 : std::min(springs.gap[i], 0.0))) return;
+    }
     // The nearest surface wins: the least penetrated segment (ties: the one met first, the
     // segment of the last pass).
     if (best_s < 0 || g > best_g) {

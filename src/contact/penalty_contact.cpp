@@ -124,14 +124,27 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     const Index node = set_.node_id(i);
     const Index* q = set_.segment_nodes(std::size_t(s));
     const double* n = pr.normal;
-    const double g = pr.gap - h.offset_on(i, s);
-    const double k = law_.stiffness(law_node(set_, i), law_segment(set_, std::size_t(s)));
     double vrel[3];
     for (int d = 0; d < 3; ++d) {
       vrel[d] = v[3 * std::size_t(node) + d];
       for (int a = 0; a < 4; ++a) vrel[d] -= pr.N[a] * v[3 * std::size_t(q[a]) + d];
     }
     const double vn = dot3(vrel, n);
+    // A new spring (the node engages, or moves on to another segment) whose node was already behind
+    // that face before this step's motion, deeper than its old spring (none: 0), did not cross the
+    // face in this step (within the face proper; beside it catch_segment does not take it). Taken
+    // at its whole depth it would be a spring nobody compressed (0.5 k g^2 from nothing, up to the
+    // catch depth); offset like an exposure, it continues from the old spring's depth and grows
+    // with this step's motion.
+    if (s != last && s != h.exposure_segment[i]) {
+      const double start = last < 0 ? 0.0 : std::min(h.gap[i], 0.0), g0 = pr.gap - h.offset[i] - vn * dt;
+      if (g0 < start) {
+        h.exposure_segment[i] = s;
+        h.exposure_offset[i] = g0 - start;
+      }
+    }
+    const double g = pr.gap - h.offset_on(i, s);
+    const double k = law_.stiffness(law_node(set_, i), law_segment(set_, std::size_t(s)));
     const double fn = law_.normal_force(k, g, vn, set_.node_mass(i), set_.segment_node_mass(std::size_t(s)));
     double F[3] = {fn * n[0], fn * n[1], fn * n[2]};
     if (friction) {

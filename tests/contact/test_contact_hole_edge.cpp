@@ -76,7 +76,9 @@ TEST(HoleEdge, NodeLiftingOffBesideAHoleIsNotCaughtByItsSideFace) {
 
 // The same drop with the punch's edge only 5 um inside the hole's edge: within the depth at which
 // a node not in contact is still caught (its one-step motion plus 2 % of the release depth, ~10 um
-// here), so the side face takes the approaching edge nodes as a new contact 5 um deep, a spring
+// here), so the side face takes the approaching edge nodes as a new contact 5 um deep. They were
+// behind that face's plane before the step's motion (nothing crossed it), so the spring starts
+// from zero at that depth (apply: an offset, as for an exposed face) instead of holding 0.5 k g^2
 // nobody compressed.
 std::string hole5_scene() {
   std::string yaml = hole_scene();
@@ -91,33 +93,39 @@ std::string hole5_scene() {
 // below the potential of the active springs (sum 0.5 k g^2 from the current gaps): two different
 // computations of the contact's energy, so a new spring booked only through its work would show
 // here as a shortfall of its whole initial potential. Allowed shortfall: 1e-3 of the largest
-// potential (round-off and the second-order trapezoid error of the springs that continue). This is
-// a consistency check of the booking, not of the physics: the physics is the test below.
+// potential (round-off and the second-order trapezoid error of the springs that continue) plus the
+// release over-booking, bounded by 0.5 f_n v0 dt per release as in the test above (the punch's
+// strip lands on the top face and lets go again). This is a consistency check of the booking, not
+// of the physics: the physics is the test below.
 TEST(HoleEdge, SpringCaughtWithinTheCatchDepthIsBookedAtItsPotential) {
   const model::Model model = test::model_from_yaml(hole5_scene(), "hole5.yaml");
   solver::Solver solver(model);
   solver.delete_elements({14});
   const double ke0 = solver.balance().kinetic();
-  double worst = 0, potential_max = 0, ratio_max = 1;
+  const double v0 = 10;  // m/s, as above
+  double worst = 0, potential_max = 0, ratio_max = 1, release_bound = 0, normal_prev = 0;
+  std::size_t active_prev = 0;
   while (solver.state().time < 20e-6) {
     solver.step();
     const auto& c = solver.contacts()[0];
     worst = std::min(worst, c.energy() - c.forces().potential);
     potential_max = std::max(potential_max, c.forces().potential);
     ratio_max = std::max(ratio_max, solver.energy_ratio());
+    if (c.forces().active < active_prev) release_bound += 0.5 * normal_prev * v0 * solver.state().dt_prev_half;
+    active_prev = c.forces().active;
+    normal_prev = c.forces().normal;
   }
   std::cout << "hole edge 5 um: initial KE " << ke0 << " J, largest spring potential " << potential_max
-            << " J, contact energy - potential min " << worst << " J, energy ratio max " << ratio_max << "\n";
+            << " J, contact energy - potential min " << worst << " J (release bound " << release_bound
+            << " J), energy ratio max " << ratio_max << "\n";
   ASSERT_GT(potential_max, 0);  // the punch did hit the top face
-  EXPECT_GT(worst, -1e-3 * potential_max);
+  EXPECT_GE(worst, -1e-3 * potential_max - release_bound);
 }
 
-// Known defect, disabled: the run creates energy. Reference: conservation of energy (elastic
-// bodies, ELFORM 2, frictionless, undamped), within 1 % as for the drop 0.1 mm inside the edge
-// above. Measured: energy ratio up to 4.70 (the springs caught 5 um deep at the hole's side face
-// push punch and base apart with energy nobody put in). Needs a catch rule that does not accept a
-// new spring deeper than the node's own approach in the step.
-TEST(HoleEdge, DISABLED_DropCaughtWithinTheCatchDepthConservesEnergy) {
+// Reference: conservation of energy (elastic bodies, ELFORM 2, frictionless, undamped), within 1 %
+// as for the drop 0.1 mm inside the edge above. A spring taken at the 5 um the nodes were already
+// behind the side face would push punch and base apart with energy nobody put in (ratio 4.7).
+TEST(HoleEdge, DropCaughtWithinTheCatchDepthConservesEnergy) {
   const model::Model model = test::model_from_yaml(hole5_scene(), "hole5.yaml");
   solver::Solver solver(model);
   solver.delete_elements({14});
