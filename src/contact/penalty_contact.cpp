@@ -72,7 +72,8 @@ InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<dou
   return r;
 }
 
-void PenaltyContact::update_exposure(std::size_t i, long s, long last, const Projection& pr) {
+[[gnu::always_inline]] inline void PenaltyContact::update_exposure(std::size_t i, long s, long last,
+                                                                   const Projection& pr) {  // per active node
   // Erosion exposed a face already behind this node, within the face proper (or made it a surface
   // node already behind a face): nothing crossed anything, so a spring of that depth would be
   // energy from nowhere. Kept as an offset instead, like an initial penetration, but on that face
@@ -144,8 +145,8 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       }
     }
     const double g = pr.gap - h.offset_on(i, s);
-    const double k = law_.stiffness(law_node(set_, i), law_segment(set_, std::size_t(s)));
-    const double fn = law_.normal_force(k, g, vn, set_.node_mass(i), set_.segment_node_mass(std::size_t(s)));
+    const double k = law_.stiffness(set_, i, std::size_t(s));
+    const double fn = law_.normal_force(set_, i, std::size_t(s), k, g, vn);
     double F[3] = {fn * n[0], fn * n[1], fn * n[2]};
     if (friction) {
       double vt[3];
@@ -223,6 +224,9 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
 
 void PenaltyContact::visit_state(StateVisitor& v) {
   StateGroup group(v, "penalty contact " + def_.spec.name);
+  // The SOFT 1/2 step is fixed at construction from the initial step; a reader built at another
+  // geometry must still use the run's.
+  v.scalar("SOFT 1/2 step", law_.dt_c);
   set_.visit_state(v);
   search_.visit_state(v);
   springs_.visit_state(v);

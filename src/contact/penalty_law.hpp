@@ -1,5 +1,6 @@
 // The penalty law of a node-segment pair (docs/theory.md section 10), as pure functions of the pair's
-// data: no search, no history beyond the friction force handed in.
+// data in the segment set (contact node i, segment s) and its kinematics: no search, no history
+// beyond the friction force handed in.
 //   stiffness : SOFT 0  k = min(k_node, k_seg), k_seg = SLSFAC SF K A^2 / V (PENOPT 1; segment set)
 //               SOFT 1  k = max(SOFT 0 value, SOFSCL 0.5 m* / dt_c^2), m* = min(node, segment mass)
 //               SOFT 2  k = 0.5 SLSFAC SF (m1 m2 / (m1 + m2)) / dt_c^2, m = segment masses
@@ -21,26 +22,6 @@
 
 namespace plyimpact::contact {
 
-// The node's and the segment's part of a pair.
-struct LawNode {
-  double k = 0;             // PENOPT 1 stiffness of the node (mean of its segments'), N/m
-  double mass = 0;          // nodal mass, kg
-  double segment_mass = 0;  // mean mass of its own segments (SOFT 2), kg
-  int side = 0;             // 0 = A (SFS), 1 = B (SFM)
-};
-struct LawSegment {
-  double k = 0;          // PENOPT 1 stiffness, N/m (inf: no element behind it)
-  double mass = 0;       // SOFT 2 segment mass, kg
-  double node_mass = 0;  // mean nodal mass of its nodes, kg
-};
-
-inline LawNode law_node(const SegmentSet& set, std::size_t i) {
-  return {set.node_stiffness(i), set.node_mass(i), set.node_segment_mass(i), set.node_side(i)};
-}
-inline LawSegment law_segment(const SegmentSet& set, std::size_t s) {
-  return {set.segment_stiffness(s), set.segment_mass(s), set.segment_node_mass(s)};
-}
-
 struct PenaltyLaw {
   int SOFT = 0;
   double SOFSCL = 0.1, SLSFAC = 0.1, SFS = 1, SFM = 1;
@@ -55,25 +36,27 @@ struct PenaltyLaw {
   double scale(int side) const { return SLSFAC * (side == 0 ? SFS : SFM); }
   bool friction() const { return FS > 0 || FD > 0; }
 
-  // Spring stiffness of the pair, N/m.
-  double stiffness(const LawNode& node, const LawSegment& seg) const {
+  // Spring stiffness of the pair of contact node i and segment s of the set, N/m. Reads only what
+  // the SOFT option needs (a hot path: each read is a likely cache miss on a large surface).
+  double stiffness(const SegmentSet& set, std::size_t i, std::size_t s) const {
     if (SOFT == 2) {
-      const double sf = scale(node.side);
-      const double m1 = node.segment_mass, m2 = seg.mass;
+      const double sf = scale(set.node_side(i));
+      const double m1 = set.node_segment_mass(i), m2 = set.segment_mass(s);
       return m1 + m2 > 0 ? 0.5 * sf * m1 * m2 / (m1 + m2) / (dt_c * dt_c) : 0.0;
     }
-    double k0 = std::min(node.k, seg.k);  // PENOPT 1
+    double k0 = std::min(set.node_stiffness(i), set.segment_stiffness(s));  // PENOPT 1
     if (!std::isfinite(k0)) k0 = 0;
     if (SOFT == 0) return k0;
-    const double m = std::min(node.mass, seg.node_mass);
+    const double m = std::min(set.node_mass(i), set.segment_node_mass(s));
     return std::max(k0, SOFSCL * 0.5 * m / (dt_c * dt_c));
   }
 
-  // Normal force magnitude (>= 0 with damping) at gap g < 0 and normal relative velocity vn of the
-  // node (mass ms) against the segment (mean nodal mass mm).
-  double normal_force(double k, double g, double vn, double ms, double mm) const {
+  // Normal force magnitude (>= 0 with damping) of the pair (i, s) at gap g < 0 and normal
+  // relative velocity vn; the damping's two-mass spring: the node and the segment's mean nodal mass.
+  double normal_force(const SegmentSet& set, std::size_t i, std::size_t s, double k, double g, double vn) const {
     double fn = -k * g;
     if (VDC > 0) {
+      const double ms = set.node_mass(i), mm = set.segment_node_mass(s);
       if (ms > 0 && mm > 0) {
         const double omega = std::sqrt(k * (ms + mm) / (ms * mm));
         fn -= VDC / 100.0 * 2.0 * std::min(ms, mm) * omega * vn;

@@ -11,6 +11,11 @@
 // are in contact/catch_rules; a tie (tiebreak, bonded interface) asks `nearest_segment`. Both walk
 // `candidates(i)` and read `record(...)`. The set is passed to each call (not stored), so the owner
 // of set and search can be moved.
+// A tie over its own segment set (tests/contact/test_segment_search.cpp):
+//   SegmentSet set(model, spec, x);  SegmentSearch search(options);
+//   search.reset(set, x);  search.sort(set, x, 0.0, /*full_depth=*/true);
+//   per node i: s = search.nearest_segment(set, i, x, distance, projection)  -> its partner (s, xi, eta)
+//   after erosion: remap = set.rebuild(alive, x), partner s -> remap.segment[s], then reset + sort.
 #pragma once
 
 #include <cstdint>

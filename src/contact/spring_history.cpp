@@ -47,14 +47,6 @@ void SpringHistory::remap(const SegmentSetRemap& r) {
   exposed_pass = true;
 }
 
-void SpringHistory::release(std::size_t i) {
-  exposure_segment[i] = -1;  // an exposure offset ends with the contact
-  exposure_offset[i] = 0;
-  for (int d = 0; d < 3; ++d) ft[3 * i + d] = 0;
-  gap[i] = k[i] = 0;
-  for (int d = 0; d < 3; ++d) fn[3 * i + d] = 0;
-}
-
 void SpringHistory::visit_state(StateVisitor& v) {
   StateGroup group(v, "springs");
   v.array("segment", segment);

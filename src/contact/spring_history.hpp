@@ -40,7 +40,13 @@ struct SpringHistory {
     return offset[i] + (s == exposure_segment[i] ? exposure_offset[i] : 0.0);
   }
   // Ends node i's spring (released): its force, friction and exposure offset.
-  void release(std::size_t i);
+  void release(std::size_t i) {
+    exposure_segment[i] = -1;  // an exposure offset ends with the contact
+    exposure_offset[i] = 0;
+    for (int d = 0; d < 3; ++d) ft[3 * i + d] = 0;
+    gap[i] = k[i] = 0;
+    for (int d = 0; d < 3; ++d) fn[3 * i + d] = 0;
+  }
 
   void visit_state(StateVisitor& visitor);
 };
