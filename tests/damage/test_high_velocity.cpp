@@ -5,6 +5,7 @@
 // erosion bookkeeping keeps eroded energy in the totals (tolerance 2 %: penalty contact and
 // erosion release energy in steps; a runaway would exceed it by orders of magnitude).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -21,7 +22,7 @@ namespace {
 TEST(HighVelocity, SteelSphereThroughCompositePlateIsStable) {
   const config::Scene scene = config::load_scene(PLYIMPACT_SOURCE_DIR "/configs/high_velocity_impact.yaml");
   const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
-  const auto dir = std::filesystem::temp_directory_path() / "plyimpact_high_velocity";
+  const auto dir = std::filesystem::temp_directory_path() / ("plyimpact_high_velocity_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   run::RunOptions options;
   options.output_dir = dir;

@@ -13,6 +13,7 @@
 //    the transferred energy itself, while the central-difference error is O(dt^2) (measured 1e-5
 //    of the total energy in the full default run).
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -63,7 +64,7 @@ TEST(LowVelocityDefault, FreeFlightFirstContactAndEnergyBalance) {
   const double e_d7136 = 6.7e3 * thickness;  // 6.7 J/mm = 6700 J/m
   EXPECT_NEAR(0.5 * mass * v0 * v0 / e_d7136, 1.0, 3.5e-3);
 
-  const auto dir = std::filesystem::temp_directory_path() / "plyimpact_low_velocity_default";
+  const auto dir = std::filesystem::temp_directory_path() / ("plyimpact_low_velocity_default_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   run::RunOptions options;
   options.output_dir = dir;
