@@ -2,6 +2,7 @@
 // file said so (same units, same validation), and every refusal names the override, never a line
 // of the file the value did not come from.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -134,7 +135,7 @@ TEST(Overrides, ThreadsSetsTheThreadCount) {
 }
 
 TEST(Overrides, CommandLine) {
-  const std::filesystem::path scene = std::filesystem::temp_directory_path() / "plyimpact_overrides_cli.yaml";
+  const std::filesystem::path scene = std::filesystem::temp_directory_path() / ("plyimpact_overrides_cli_" + std::to_string(::getpid()) + ".yaml");
   std::ofstream(scene) << kScene;
   std::ostringstream out, err;
   EXPECT_EQ(app::run_application({"check", scene.string(), "--set", "control.tsfac=0.8"}, out, err), 1);

@@ -1,6 +1,7 @@
 // Stability diagnosis: an element driven inside out stops the run with its id, part, cycle and
 // time; run_model keeps the frames already written and summary.json says why it stopped.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <limits>
@@ -112,7 +113,7 @@ TEST(Stability, LoneElementCourantLimitMatchesAnalysis) {
 
 TEST(Stability, StoppedRunKeepsOutputAndExplains) {
   const model::Model model = crushed_cube();
-  const auto dir = std::filesystem::temp_directory_path() / "plyimpact_test_stability";
+  const auto dir = std::filesystem::temp_directory_path() / ("plyimpact_test_stability_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   run::RunOptions options;
   options.output_dir = dir;
