@@ -29,11 +29,19 @@ std::string format_number(double v) {
 std::string origin_of(const Reader& r, const Context& ctx) { return config::detail::location(ctx.file, r.mark()); }
 
 std::vector<ParameterValue> read_list(const Reader& r, const Context& ctx) {
-  r.require_list("a list of values (numbers, '<number> <unit>' or names)", true);
+  r.require_list("a list of values (numbers, '<number> <unit>', names or flow lists)", true);
   std::vector<ParameterValue> values;
   for (const Reader& item : r.items()) {
-    item.require_scalar("a scalar value (a number, '<number> <unit>' or a name)");
-    values.push_back({item.node().Scalar(), origin_of(item, ctx)});
+    if (item.node().IsScalar()) {
+      values.push_back({item.node().Scalar(), origin_of(item, ctx)});
+      continue;
+    }
+    // A list or mapping value (an element count [50, 1, 1]) is handed on as flow YAML.
+    if (!item.node().IsSequence() && !item.node().IsMap())
+      item.fail("a value is needed", item.found_text(), "a scalar, a [list] or a {mapping}");
+    YAML::Emitter e;
+    e << YAML::Flow << item.node();
+    values.push_back({e.c_str(), origin_of(item, ctx)});
   }
   return values;
 }
