@@ -98,6 +98,8 @@ std::optional<LambertJonasFit> fit_residual_velocity(const StudySpec& spec, cons
     j["p"] = fit.p;
     j["ballistic_limit"] = fit.v_bl;
     j["rms_residual"] = fit.rms;
+    if (std::none_of(vr.begin(), vr.end(), [](double x) { return x <= 0; }))
+      j["note"] = "every case perforated: the ballistic limit is an extrapolation below the swept velocities";
     plot_lambert_jonas(fit, spec.lambert_jonas->velocity_parameter, *std::max_element(v.begin(), v.end()), dir, plots);
     return fit;
   } catch (const InputError& e) {

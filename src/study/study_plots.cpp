@@ -92,7 +92,7 @@ void plot_lambert_jonas(const LambertJonasFit& fit, const std::string& velocity_
   plot.csv = dir / "study.csv";
   plot.x_column = velocity_key;
   char title[160];
-  std::snprintf(title, sizeof title, "Lambert-Jonas fit: a = %.3g, p = %.3g, v_bl = %.4g m/s", fit.a, fit.p, fit.v_bl);
+  std::snprintf(title, sizeof title, "Lambert-Jonas fit: a = %.3g, p = %.3g, ballistic limit %.4g m/s", fit.a, fit.p, fit.v_bl);
   plot.series.push_back({"residual_velocity", "computed", {}, true});
   plot.series.push_back({"residual_velocity_fit", title, curve, false});
   plot.title = "residual velocity against impact velocity";
