@@ -11,6 +11,7 @@
 #include "app/dcb_reduce_command.hpp"
 #include "app/mesh_export.hpp"
 #include "app/plot_command.hpp"
+#include "app/study_command.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
@@ -48,7 +49,7 @@ constexpr const char* kUsageTail =
     "exit codes: 0 success, 1 invalid input (scene, override, data file), 2 run stopped early (see\n"
     "summary.json) or an output could not be written, 64 bad usage\n";
 
-std::string usage() { return std::string(kUsageHead) + kDcbReduceUsage + kPlotUsage + kUsageTail; }
+std::string usage() { return std::string(kUsageHead) + kDcbReduceUsage + kPlotUsage + kStudyUsage + kUsageTail; }
 
 struct Loaded {
   config::Scene scene;
@@ -228,6 +229,7 @@ int run_application(const std::vector<std::string>& args, std::ostream& out, std
     }
     if (args[0] == "dcb-reduce") return dcb_reduce_command({args.begin() + 1, args.end()}, out, err);
     if (args[0] == "plot") return plot_command({args.begin() + 1, args.end()}, out, err);
+    if (args[0] == "study") return study_command({args.begin() + 1, args.end()}, out, err);
     if (is_keyword_command(args))
       return keyword_command(args, out, err, [](const std::string& scene, const std::string& dir, std::ostream& o) {
         return run(scene, dir, Overrides{}, o);

@@ -54,9 +54,12 @@ std::string script_for(const CsvPlot& p, const fs::path& out) {
   s << "plot ";
   for (std::size_t i = 0; i < p.series.size(); ++i) {
     const PlotSeries& ser = p.series[i];
-    s << (i ? ", \\\n     " : "") << quoted(p.csv.string()) << " using (column(" << quoted(p.x_column) << ")*"
-      << p.x_scale << "):(column(" << quoted(ser.y_column) << ")*" << p.y_scale << ") with "
-      << (p.with_points ? "linespoints pointsize 1.2" : "lines") << " linewidth 2 title "
+    const char* style = ser.points_only ? "points pointtype 7 pointsize 1.5"
+                        : p.with_points  ? "linespoints pointsize 1.2 linewidth 2"
+                                         : "lines linewidth 2";
+    s << (i ? ", \\\n     " : "") << quoted((ser.csv.empty() ? p.csv : ser.csv).string()) << " using (column("
+      << quoted(p.x_column) << ")*" << p.x_scale << "):(column(" << quoted(ser.y_column) << ")*" << p.y_scale
+      << ") with " << style << " title "
       << quoted(ser.title.empty() ? ser.y_column : ser.title) << " noenhanced";
   }
   s << "\nunset output\n";
@@ -120,12 +123,13 @@ std::vector<std::string> csv_columns(const fs::path& csv) {
 
 void plot_csv_png(const CsvPlot& plot, const fs::path& png) {
   if (plot.series.empty()) throw InputError("a plot needs at least one y column");
-  const auto columns = csv_columns(plot.csv);
-  std::vector<std::string> wanted{plot.x_column};
-  for (const auto& s : plot.series) wanted.push_back(s.y_column);
-  for (const auto& w : wanted)
-    if (std::find(columns.begin(), columns.end(), w) == columns.end())
-      throw InputError(msg() << plot.csv.string() << ": no column '" << w << "'; allowed one of " << join(columns));
+  for (const auto& ser : plot.series) {
+    const fs::path& csv = ser.csv.empty() ? plot.csv : ser.csv;
+    const auto columns = csv_columns(csv);
+    for (const auto& w : {plot.x_column, ser.y_column})
+      if (std::find(columns.begin(), columns.end(), w) == columns.end())
+        throw InputError(msg() << csv.string() << ": no column '" << w << "'; allowed one of " << join(columns));
+  }
   const auto gnuplot = find_gnuplot();
   if (!gnuplot)
     throw RunError(msg() << "cannot plot " << png.string()

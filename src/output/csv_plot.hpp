@@ -15,6 +15,8 @@ namespace plyimpact::output {
 struct PlotSeries {
   std::string y_column;
   std::string title;  // legend entry; the column name when empty
+  std::filesystem::path csv{};  // another CSV with the same x column (e.g. a fitted curve); empty: CsvPlot::csv
+  bool points_only = false;     // markers without lines (measured points beside a fitted curve)
 };
 
 struct CsvPlot {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 
 #include "core/error.hpp"
 #include "output/atomic_file.hpp"
@@ -69,6 +71,69 @@ void HistoryTable::write_csv(const std::filesystem::path& path) const {
     text += (i % ncol == ncol - 1) ? '\n' : ',';
   }
   write_text_atomically(path, text);
+}
+
+int HistoryTable::column_index(std::string_view name) const {
+  for (std::size_t c = 0; c < columns_.size(); ++c)
+    if (columns_[c] == name) return int(c);
+  return -1;
+}
+
+namespace {
+
+std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '"') {
+      if (quoted && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else {
+        quoted = !quoted;
+      }
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else if (c != '\r') {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+}  // namespace
+
+HistoryTable read_history_csv(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(msg() << path.string() << ": cannot open the CSV file; allowed a path to a readable file");
+  std::string line;
+  std::size_t line_no = 0;
+  std::vector<std::string> header;
+  while (header.empty() && std::getline(in, line)) {
+    ++line_no;
+    if (!line.empty() && line != "\r") header = split_csv_line(line);
+  }
+  if (header.empty()) throw InputError(msg() << path.string() << ": no header line; allowed a CSV with named columns");
+  HistoryTable table(header);
+  std::vector<double> row(header.size());
+  while (std::getline(in, line)) {
+    ++line_no;
+    if (line.empty() || line == "\r") continue;
+    const auto fields = split_csv_line(line);
+    if (fields.size() != header.size())
+      throw InputError(msg() << path.string() << ":" << line_no << ": " << fields.size() << " fields; allowed "
+                             << header.size() << " (one per column of the header)");
+    for (std::size_t c = 0; c < fields.size(); ++c) {
+      char* end = nullptr;
+      row[c] = std::strtod(fields[c].c_str(), &end);
+      if (fields[c].empty() || *end != '\0')
+        throw InputError(msg() << path.string() << ":" << line_no << ": column '" << header[c] << "': '" << fields[c]
+                               << "' is not a number; allowed a decimal number, nan or inf");
+    }
+    table.add_row(row);
+  }
+  return table;
 }
 
 }  // namespace plyimpact::output

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace plyimpact::output {
@@ -24,6 +25,10 @@ class HistoryTable {
   // columns_ is only empty in a moved-from table.
   std::size_t rows() const { return columns_.empty() ? 0 : values_.size() / columns_.size(); }
   const std::vector<std::string>& columns() const { return columns_; }
+  /// Index of the named column, or -1.
+  int column_index(std::string_view name) const;
+  /// Value at (row, column).
+  double at(std::size_t row, std::size_t column) const { return values_[row * columns_.size() + column]; }
   /// Row-major, shape (rows(), columns().size()).
   std::span<const double> values() const { return values_; }
 
@@ -35,5 +40,11 @@ class HistoryTable {
   std::vector<std::string> columns_;
   std::vector<double> values_;
 };
+
+/// Reads back a CSV written by HistoryTable::write_csv (a header line, then numeric rows; "nan",
+/// "inf" accepted).
+/// @throws InputError naming file:line when the file cannot be read, a row has the wrong number of
+///         fields or a field is not a number
+HistoryTable read_history_csv(const std::filesystem::path& path);
 
 }  // namespace plyimpact::output

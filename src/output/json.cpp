@@ -127,6 +127,33 @@ const Json& Json::at(std::size_t index) const {
   return (*a)[index];
 }
 
+bool Json::as_bool() const {
+  if (const auto* b = std::get_if<bool>(&value_)) return *b;
+  throw std::logic_error("Json: not a boolean");
+}
+
+double Json::as_number() const {
+  if (const auto* d = std::get_if<double>(&value_)) return *d;
+  if (const auto* i = std::get_if<std::int64_t>(&value_)) return static_cast<double>(*i);
+  if (const auto* u = std::get_if<std::uint64_t>(&value_)) return static_cast<double>(*u);
+  throw std::logic_error("Json: not a number");
+}
+
+const std::string& Json::as_string() const {
+  if (const auto* s = std::get_if<std::string>(&value_)) return *s;
+  throw std::logic_error("Json: not a string");
+}
+
+const Json::Array& Json::as_array() const {
+  if (const auto* a = std::get_if<Array>(&value_)) return *a;
+  throw std::logic_error("Json: not an array");
+}
+
+const Json::Object& Json::as_object() const {
+  if (const auto* o = std::get_if<Object>(&value_)) return *o;
+  throw std::logic_error("Json: not an object");
+}
+
 std::string Json::dump(int indent) const {
   std::string out;
   dump_to(out, indent, 0);

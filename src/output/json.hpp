@@ -1,5 +1,5 @@
-// A minimal JSON value for writing the run summary (summary.json): build a tree, dump() it, write
-// it atomically. Write-only on purpose (no parser) and dependency-free. Objects keep insertion
+// A minimal JSON value for the run summary (summary.json): build a tree, dump() it, write it
+// atomically; read one back with parse_json (output/json_reader.hpp). Dependency-free. Objects keep insertion
 // order so the summary reads in the order the solver filled it. Doubles are written in the
 // shortest form that reads back to the same double (at most 17 significant digits), integers
 // exactly, and non-finite doubles as null (JSON has no NaN/inf).
@@ -60,6 +60,13 @@ class Json {
   const Json* find(std::string_view key) const;
   /// Array element; throws std::out_of_range.
   const Json& at(std::size_t index) const;
+
+  // Typed reads; each throws std::logic_error when the value is of another kind.
+  bool as_bool() const;
+  double as_number() const;  // number or integer
+  const std::string& as_string() const;
+  const Array& as_array() const;
+  const Object& as_object() const;
 
   /// Serialises the tree. indent > 0: one member per line indented by `indent` spaces per level;
   /// indent <= 0: compact, no whitespace. Strings are escaped per RFC 8259 (quotes, backslash,

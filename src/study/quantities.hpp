@@ -1,0 +1,56 @@
+// Quantities of interest of one finished run, computed from its history.csv and summary.json and
+// looked up by name in one table (quantity_table()); adding a quantity is one function and one
+// table row. A quantity may expand into several values (eroded elements by cause, delaminated area
+// per interface). When the scene cannot provide a quantity (no rigid impactor, no delamination
+// columns, nothing erodes), its function throws NotAvailable with the reason, which the study table
+// reports instead of a number.
+#pragma once
+
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "output/history_table.hpp"
+#include "output/json.hpp"
+
+namespace plyimpact::study {
+
+struct RunRecord {
+  output::HistoryTable history{{"time"}};
+  output::Json summary;  // summary.json
+};
+
+struct QuantityValue {
+  std::string name;  // the quantity's name, or name_<suffix> for an expanded quantity
+  double value;      // SI
+};
+
+class NotAvailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+using QuantityFunction = std::vector<QuantityValue> (*)(const RunRecord&);
+
+struct QuantityDefinition {
+  std::string_view name;
+  std::string_view unit;         // SI unit of the values
+  std::string_view description;  // one line, for usage text and study.json
+  QuantityFunction compute;
+};
+
+/// Every quantity, in the order of the usage text.
+std::span<const QuantityDefinition> quantity_table();
+
+/// The named quantity, or nullptr.
+const QuantityDefinition* find_quantity(std::string_view name);
+
+/// Names of all quantities, for "allowed ..." messages.
+std::vector<std::string> quantity_names();
+
+/// Reads <case_dir>/history.csv and <case_dir>/summary.json. @throws InputError
+RunRecord read_run_record(const std::string& case_dir);
+
+}  // namespace plyimpact::study

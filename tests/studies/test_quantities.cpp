@@ -1,0 +1,103 @@
+// Quantities of interest on a synthetic run record with a closed-form answer: a 2 kg rigid tup
+// moving at -3 m/s along z decelerated by a constant 100 N contact force (a = 50 m/s^2), sampled
+// every 10 ms for 0.1 s: v(t) = -3 + 50 t (rebound at 0.06 s, +2 m/s at the end), travel
+// s(t) = 3 t - 25 t^2 (0.09 m at the rebound, 0.05 m at the end). Expected: mass 2 kg from F = m a,
+// absorbed energy 0.5 x 2 x (9 - 4) = 5 J, residual velocity -2 m/s (rebound), largest travel
+// 0.09 m, permanent indentation 0.05 m. Tolerances 1e-12 relative: the values are exact in binary
+// up to the products above.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "output/json.hpp"
+#include "study/quantities.hpp"
+
+namespace plyimpact::study {
+namespace {
+
+RunRecord tup_record() {
+  RunRecord r;
+  r.history = output::HistoryTable({"time", "kinetic_energy", "internal_energy", "hourglass_energy", "energy_ratio",
+                                    "contact_impact_fx", "contact_impact_fy", "contact_impact_fz",
+                                    "contact_impact_normal", "contact_impact_tangential", "rigid_tup_x", "rigid_tup_y",
+                                    "rigid_tup_z", "rigid_tup_vx", "rigid_tup_vy", "rigid_tup_vz", "rigid_tup_ax",
+                                    "rigid_tup_ay", "rigid_tup_az", "rigid_tup_contact_fx", "rigid_tup_contact_fy",
+                                    "rigid_tup_contact_fz", "eroded_elements"});
+  for (int i = 0; i <= 10; ++i) {
+    const double t = 0.01 * i, v = -3 + 50 * t, z = 0.5 - 3 * t + 25 * t * t;
+    const double plate_force = i == 4 ? 150.0 : 100.0;  // the contact columns' own peak at 0.04 s
+    const double internal = i < 5 ? 10.0 * i : 40.0, hourglass = 0.5 * i;
+    r.history.add_row(std::vector<double>{t, 0.5 * 2 * v * v, internal, hourglass, 1.0 + 0.001 * i * (i % 2 ? 1 : -1),
+                                          0, 0, plate_force, plate_force, 0, 0.1, 0.2, z, 0, 0, v, 0, 0, 50, 0, 0, 100,
+                                          i >= 7 ? 3.0 : 0.0});
+  }
+  r.summary = output::Json::object();
+  r.summary["wall_seconds"] = 12.5;
+  r.summary["elements"] = 7488;
+  r.summary["erosion"]["eroded_elements"] = 3;
+  output::Json by = output::Json::array();
+  for (auto [cause, count] : {std::pair{"fibre_tension", 2}, std::pair{"matrix", 1}}) {
+    output::Json e = output::Json::object();
+    e["part"] = "ply_1";
+    e["cause"] = cause;
+    e["count"] = count;
+    by.push_back(e);
+  }
+  r.summary["erosion"]["by_part_and_cause"] = by;
+  return r;
+}
+
+double value(const RunRecord& r, const std::string& quantity, const std::string& name = "") {
+  for (const auto& v : find_quantity(quantity)->compute(r))
+    if (v.name == (name.empty() ? quantity : name)) return v.value;
+  ADD_FAILURE() << "no value " << name;
+  return std::nan("");
+}
+
+TEST(Quantities, RigidImpactorClosedForm) {
+  const RunRecord r = tup_record();
+  EXPECT_NEAR(value(r, "absorbed_energy"), 5.0, 5e-12);
+  EXPECT_NEAR(value(r, "residual_velocity"), -2.0, 2e-12);
+  EXPECT_NEAR(value(r, "max_impactor_displacement"), 0.09, 1e-12);
+  EXPECT_NEAR(value(r, "permanent_indentation"), 0.05, 1e-12);
+  EXPECT_DOUBLE_EQ(value(r, "peak_contact_force"), 150.0);
+  EXPECT_DOUBLE_EQ(value(r, "peak_contact_force_time"), 0.04);
+  EXPECT_DOUBLE_EQ(value(r, "first_damage_time"), 0.07);
+  EXPECT_NEAR(value(r, "energy_ratio_deviation"), 0.010, 1e-15);  // the last sample, 1 - 0.010
+  EXPECT_NEAR(value(r, "hourglass_ratio"), 5.0 / 40.0, 1e-15);  // 0.5 x 10 over the peak internal 40
+  EXPECT_DOUBLE_EQ(value(r, "wall_time"), 12.5);
+  EXPECT_DOUBLE_EQ(value(r, "elements"), 7488);
+  EXPECT_DOUBLE_EQ(value(r, "eroded_elements"), 3);
+  EXPECT_DOUBLE_EQ(value(r, "eroded_elements", "eroded_elements_fibre_tension"), 2);
+  EXPECT_DOUBLE_EQ(value(r, "eroded_elements", "eroded_elements_matrix"), 1);
+}
+
+TEST(Quantities, MissingDataSaysWhy) {
+  const RunRecord r = tup_record();
+  try {
+    find_quantity("delaminated_area")->compute(r);
+    FAIL();
+  } catch (const NotAvailable& e) {
+    EXPECT_NE(std::string(e.what()).find("not available in this scene"), std::string::npos) << e.what();
+  }
+  RunRecord plain;
+  plain.history = output::HistoryTable({"time", "kinetic_energy"});
+  plain.history.add_row(std::vector<double>{0, 1});
+  EXPECT_THROW(find_quantity("residual_velocity")->compute(plain), NotAvailable);
+  EXPECT_THROW(find_quantity("eroded_elements")->compute(plain), NotAvailable);
+}
+
+TEST(Quantities, DelaminatedAreaPerInterface) {
+  RunRecord r;
+  r.history = output::HistoryTable({"time", "delaminated_area", "delaminated_area_1", "delaminated_area_2"});
+  r.history.add_row(std::vector<double>{0, 0, 0, 0});
+  r.history.add_row(std::vector<double>{1, 3e-6, 1e-6, 2e-6});
+  const auto v = find_quantity("delaminated_area")->compute(r);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_EQ(v[2].name, "delaminated_area_2");
+  EXPECT_DOUBLE_EQ(v[0].value, 3e-6);
+}
+
+}  // namespace
+}  // namespace plyimpact::study
