@@ -13,7 +13,7 @@
 #include "config/scene.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
-#include "solver/run.hpp"
+#include "run/run.hpp"
 
 namespace plyimpact::test {
 
@@ -43,9 +43,9 @@ inline void write_file(const std::filesystem::path& p, const std::string& text) 
 inline std::string run_history(const config::Scene& scene, const std::filesystem::path& dir) {
   const mesh::Mesh m = mesh::mesh_scene(scene);
   const model::Model model = model::build_model(scene, m);
-  solver::RunOptions options;
+  run::RunOptions options;
   options.output_dir = dir;
-  const auto report = solver::run_model(model, options);
+  const auto report = run::run_model(model, options);
   EXPECT_TRUE(report.completed) << report.stop_reason;
   return read_file(report.history);
 }
