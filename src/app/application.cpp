@@ -64,12 +64,15 @@ Loaded load(const std::string& path, const Overrides& overrides) {
   return l;
 }
 
-// Data the mesher provides that the solver does not use yet (interfaces: issue 5, contact: issue 4).
+// The meshed interfaces (delaminating or merged) and an impactor that no contact uses.
 void print_mesher_extras(const model::Model& m, std::ostream& out) {
   for (const auto& i : m.interfaces)
     out << "  interface " << i.id << " (plies " << i.lower_ply + 1 << "/" << i.upper_ply + 1 << ", z = " << i.z
         << " m): " << i.lower_nodes.size() << " coincident node pairs, " << i.lower_segments.size() / 4
-        << " segment pairs; tagged for delamination; bonded until tiebreak is implemented\n";
+        << " segment pairs; "
+        << (i.tiebreak ? "delaminating (tiebreak law, see the delamination subsystem)"
+                       : "merged (model: merged): the plies are bonded here")
+        << "\n";
   if (m.impactor && m.impactor_quads.empty()) {
     const auto& imp = *m.impactor;
     char buf[256];
