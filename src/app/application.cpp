@@ -174,7 +174,8 @@ int check(const std::string& path, const Overrides& overrides, std::ostream& out
   }
   for (const auto& w : solver.warnings()) out << "  warning: " << w << "\n";
   if (st.dt_contact_controls)
-    std::snprintf(buf, sizeof buf, "  stable time step: %.6g s (TSSFAC %.3g applied), controlled by contact stiffness\n",
+    std::snprintf(buf, sizeof buf,
+                  "  stable time step: %.6g s (TSSFAC %.3g applied), controlled by contact or interface stiffness\n",
                   st.dt_next_half, m.control.tssfac);
   else
     std::snprintf(buf, sizeof buf,

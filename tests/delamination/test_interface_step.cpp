@@ -25,15 +25,14 @@ namespace {
 constexpr double kRho = 1550;  // kg/m^3, Table 8.4
 
 double t800s_m21_wave_modulus() {
-  config::MatOrthotropicElastic m;
-  m.RO = kRho;
+  material::OrthotropicConstants m;
   m.EA = 157e9;
   m.EB = m.EC = 8.5e9;
   m.PRBA = m.PRCA = 0.35 * 8.5 / 157;  // minor ratios from nu_ab = nu_ac = 0.35
   m.PRCB = 0.53;
   m.GAB = m.GCA = 4.2e9;
   m.GBC = 2.2e9;
-  return material::max_wave_modulus(material::orthotropic_stiffness(m, config::SourceLocation{}));
+  return material::max_wave_modulus(material::orthotropic_stiffness(m));
 }
 
 // Stable step of an a x a x h brick, as the element pass computes it (no bulk viscosity).
