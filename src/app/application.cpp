@@ -68,12 +68,15 @@ Loaded load(const std::string& path, const Overrides& overrides) {
   return l;
 }
 
-// Data the mesher provides that the solver does not use yet (interfaces: issue 5, contact: issue 4).
+// The meshed interfaces (delaminating or merged) and an impactor that no contact uses.
 void print_mesher_extras(const model::Model& m, std::ostream& out) {
   for (const auto& i : m.interfaces)
     out << "  interface " << i.id << " (plies " << i.lower_ply + 1 << "/" << i.upper_ply + 1 << ", z = " << i.z
         << " m): " << i.lower_nodes.size() << " coincident node pairs, " << i.lower_segments.size() / 4
-        << " segment pairs; tagged for delamination; bonded until tiebreak is implemented\n";
+        << " segment pairs; "
+        << (i.tiebreak ? "delaminating (tiebreak law, see the delamination subsystem)"
+                       : "merged (model: merged): the plies are bonded here")
+        << "\n";
   if (m.impactor && m.impactor_quads.empty()) {
     const auto& imp = *m.impactor;
     char buf[256];
@@ -175,7 +178,8 @@ int check(const std::string& path, const Overrides& overrides, std::ostream& out
   }
   for (const auto& w : solver.warnings()) out << "  warning: " << w << "\n";
   if (st.dt_contact_controls)
-    std::snprintf(buf, sizeof buf, "  stable time step: %.6g s (TSSFAC %.3g applied), controlled by contact stiffness\n",
+    std::snprintf(buf, sizeof buf,
+                  "  stable time step: %.6g s (TSSFAC %.3g applied), controlled by contact or interface stiffness\n",
                   st.dt_next_half, m.control.tssfac);
   else
     std::snprintf(buf, sizeof buf,

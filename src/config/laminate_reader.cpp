@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <cstdlib>
 
 #include "config/layup_notation.hpp"
 #include "core/error.hpp"
@@ -137,6 +138,106 @@ std::vector<bool> read_interfaces(const Reader& r, const std::vector<double>& an
     out[std::size_t(i - 1)] = true;
   }
   return out;
+}
+
+// Lower and upper bounds [lo, hi] of a pre-crack region along one plate side of length `side`.
+void read_range(const Reader& r, double side, double out[2]) {
+  const std::string allowed = msg() << "[lo, hi] with 0 <= lo < hi <= " << side << " m (inside the plate)";
+  r.require_list(allowed, false);
+  if (r.node().size() != 2) r.fail("expected [lo, hi]", allowed);
+  const auto v = r.items();
+  out[0] = v[0].as_quantity(u::length, Limits::interval(0, false, side, false, "pre-crack bound (inside the plate)"));
+  out[1] = v[1].as_quantity(u::length, Limits::interval(0, false, side * (1 + 1e-12), false, "pre-crack bound (inside the plate)"));
+  if (!(out[0] < out[1])) r.fail("a pre-crack region outside the plate or empty", allowed);
+}
+
+// The law keys of `r` (a map) on top of `law`; each given value must be > 0 where the card needs it.
+void read_law_keys(const Reader& r, cohesive::TractionLawParams& law) {
+  law.option = cohesive::TiebreakOption(r.int_choice_or("OPTION", int(law.option), {6, 7, 9}));
+  const auto positive = [&](const char* key, u::Dimension d, double& field) {
+    if (r.has(key)) field = r.quantity(key, d, Limits::positive(key));
+  };
+  positive("NFLS", u::stress, law.NFLS);
+  positive("SFLS", u::stress, law.SFLS);
+  positive("ERATEN", u::energy_per_area, law.ERATEN);
+  positive("ERATES", u::energy_per_area, law.ERATES);
+  positive("CN", u::stiffness_per_area, law.CN);
+  positive("CT2CN", u::dimensionless, law.CT2CN);
+  if (r.has("FS")) law.FS = r.quantity("FS", u::dimensionless, Limits::non_negative("FS"));
+  if (r.has("PARAM")) {
+    // PARAM is CCRIT (a length) for OPTION 6, a friction angle in degrees for 7, an exponent for 9.
+    if (law.option == cohesive::TiebreakOption::StressCcrit)
+      law.PARAM = r.quantity("PARAM", u::length, Limits::positive("PARAM (CCRIT)"));
+    else if (law.option == cohesive::TiebreakOption::DiscreteCrack)
+      law.PARAM = r.angle_or("PARAM", 0.0) / kDeg;
+    else
+      law.PARAM = r.quantity("PARAM", u::dimensionless);
+  }
+}
+
+void read_precrack(const Reader& r, const LaminateSpec& lam, InterfaceLawSpec& spec) {
+  r.require_map("{x: [lo, hi], y: [lo, hi]} (y optional: the whole width)");
+  r.allow_keys({"x", "y"});
+  read_range(r.at("x", "[lo, hi]"), lam.length, spec.precrack_x);
+  spec.precrack_y[0] = 0;
+  spec.precrack_y[1] = lam.width;
+  if (const auto y = r.find("y")) read_range(*y, lam.width, spec.precrack_y);
+  spec.has_precrack = true;
+}
+
+const std::initializer_list<std::string_view> kLawKeys = {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN",
+                                                           "ERATES", "CN",   "CT2CN", "FS", "precrack"};
+
+// `interfaces:` as a mapping: {select: <all | angle-change | none | list>, model: merged | tiebreak,
+// law keys, precrack, per_interface: {k: {law keys, precrack}}}. Fills lam.delaminating and
+// lam.interface_law.
+void read_interface_laws(const Reader& r, const std::vector<double>& angles, LaminateSpec& lam) {
+  r.require_map("{select: all | angle-change | none | [numbers], model: merged | tiebreak, OPTION, NFLS, ...}");
+  r.allow_keys({"select", "model", "OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "FS",
+                "precrack", "per_interface"});
+  lam.delaminating = read_interfaces(r.at("select", "all, angle-change, none, or a list of interface numbers"), angles);
+  lam.interface_law.assign(lam.delaminating.size(), std::nullopt);
+  const std::string model = r.has("model") ? r.at("model", "").as_choice({"merged", "tiebreak"}) : "merged";
+  if (model == "merged") {
+    for (const auto& key : {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "FS", "precrack",
+                            "per_interface"})
+      if (r.has(key)) r.at(key, "").fail("a law parameter with model: merged (the plies stay bonded)",
+                                         "model: tiebreak to give the interfaces a law");
+    return;
+  }
+  InterfaceLawSpec base;
+  base.where = r.where();
+  read_law_keys(r, base.law);
+  if (const auto p = r.find("precrack")) read_precrack(*p, lam, base);
+  std::map<std::size_t, Reader> overrides;
+  if (const auto per = r.find("per_interface")) {
+    per->require_map("a mapping of interface number -> {law keys, precrack}");
+    for (const auto& [key, item] : per->entries()) {
+      char* end = nullptr;
+      const long k = std::strtol(key.c_str(), &end, 10);
+      if (*end != '\0' || k < 1 || std::size_t(k) > lam.delaminating.size() || !lam.delaminating[std::size_t(k - 1)])
+        item.fail(msg() << "interface " << key << " is not a delaminating interface of this laminate",
+                  "the number of an interface chosen by select (interface i lies between plies i and i+1)");
+      item.require_map("a mapping of law keys (OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS) and precrack");
+      item.allow_keys(kLawKeys);
+      overrides.emplace(std::size_t(k - 1), item);
+    }
+  }
+  for (std::size_t i = 0; i < lam.delaminating.size(); ++i) {
+    if (!lam.delaminating[i]) continue;
+    InterfaceLawSpec spec = base;
+    const auto it = overrides.find(i);
+    if (it != overrides.end()) {
+      spec.where = it->second.where();
+      read_law_keys(it->second, spec.law);
+      if (const auto p = it->second.find("precrack")) read_precrack(*p, lam, spec);
+    }
+    const Reader& at_reader = it != overrides.end() ? it->second : r;
+    const SourceLocation w = at_reader.where();
+    cohesive::require_valid_traction_law(spec.law, msg() << w.file << ":" << w.line << ":" << w.column << ": "
+                                                         << w.key_path << " (interface " << i + 1 << ")");
+    lam.interface_law[i] = spec;
+  }
 }
 
 std::array<bool, 3> read_fix(const Reader& r) {
@@ -278,7 +379,11 @@ void read_laminate(const Reader& r, Scene& scene) {
   }
   lam.refinement_level = int(r.integer_or("refinement_level", 0, Limits::interval(0, false, 6, false, "refinement level")));
   lam.delaminating = angles.size() > 1 ? std::vector<bool>(angles.size() - 1, false) : std::vector<bool>{};
-  if (const auto i = r.find("interfaces")) lam.delaminating = read_interfaces(*i, angles);
+  if (const auto i = r.find("interfaces")) {
+    if (i->node().IsMap()) read_interface_laws(*i, angles, lam);
+    else lam.delaminating = read_interfaces(*i, angles);
+  }
+  if (lam.interface_law.empty()) lam.interface_law.assign(lam.delaminating.size(), std::nullopt);
   if (const auto g = r.find("group_plies")) lam.group_plies = g->as_choice({"true", "false"}) == "true";
   if (const auto s = r.find("supports")) lam.supports = read_supports(*s, lam);
 

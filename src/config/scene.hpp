@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "cohesive/law_parameters.hpp"
 #include "config/mat054_spec.hpp"
 #include "config/material_axes.hpp"
 #include "core/error.hpp"
@@ -182,6 +183,15 @@ struct SupportSpec {
   SourceLocation where;
 };
 
+// Traction-separation law of one delaminating interface (*CONTACT_..._TIEBREAK card 4) and the
+// region of it that starts separated (a pre-crack: its pairs start with damage 1).
+struct InterfaceLawSpec {
+  cohesive::TractionLawParams law;
+  bool has_precrack = false;
+  double precrack_x[2] = {0, 0}, precrack_y[2] = {0, 0};  // m, region of the plate (y: whole width if not given)
+  SourceLocation where;
+};
+
 // Laminated plate meshed ply by ply with gmsh (mesh/laminate_mesher): x along the length, y along
 // the width, z through the thickness. A symmetry plane keeps the half x <= length/2 (or y <= width/2).
 struct LaminateSpec {
@@ -197,6 +207,9 @@ struct LaminateSpec {
   int refinement_level = 0;          // every in-plane division halved this many times (nested meshes)
   // delaminating[i]: the interface between plies i and i+1 (0-based) gets duplicated nodes.
   std::vector<bool> delaminating;
+  // interface_law[i]: the tiebreak law of delaminating interface i (empty: `model: merged`, the
+  // pair's nodes are merged and the plies stay bonded).
+  std::vector<std::optional<InterfaceLawSpec>> interface_law;
   bool group_plies = false;          // adjacent equal-angle plies without a delaminating interface share a part
   std::array<bool, 2> symmetry{};    // symmetry planes x = length/2, y = width/2 (half/quarter model)
   std::vector<SupportSpec> supports;

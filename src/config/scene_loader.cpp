@@ -683,6 +683,10 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
                     "node_sets, boundary_conditions, initial_velocity, rigid_bodies, rigid_walls, contacts, gravity";
   if (!root.node().IsDefined() || root.node().IsNull()) root.fail("the scene is empty", top);
   root.require_map(top);
+  if (const auto i = root.find("interfaces"))
+    i->fail(root.has("laminate") ? "interfaces belong inside the laminate section"
+                                 : "delaminating interfaces need a laminate, and this scene has none",
+            "laminate.interfaces: {select: ..., model: tiebreak, ...} in a scene with a laminate section");
   root.allow_keys({"units", "control", "output", "materials", "sections", "parts", "mesh", "laminate", "impactor",
                    "node_sets", "boundary_conditions", "initial_velocity", "rigid_bodies", "rigid_walls", "contacts",
                    "gravity"});

@@ -173,6 +173,8 @@ struct Interface {
   std::vector<double> area;                            // (num_pairs) m^2
   std::vector<double> normal;                          // (num_pairs, 3)
   std::vector<Index> lower_segments, upper_segments;   // (num_segments, 4)
+  // Tiebreak law (and pre-crack) of the interface; empty: its pairs are merged (bonded plies).
+  std::optional<config::InterfaceLawSpec> tiebreak;
   std::size_t num_pairs() const { return lower_nodes.size(); }
 };
 
@@ -209,7 +211,7 @@ struct Model {
   // From the laminate mesher, converted once by build_model (the run never sees mesher types).
   std::vector<int> element_ply;                // (element_id - 1) -> 0-based ply, -1 if none; may be empty
   std::vector<Interface> interfaces;  // delaminating interfaces (coincident node pairs, segments)
-  bool interfaces_bonded = false;  // true: the pairs are merged in the element connectivity (no tiebreak yet)
+  bool interfaces_bonded = false;  // true: some interface's pairs are merged in the element connectivity (no law)
   std::optional<Impactor> impactor;  // impactor surface and mass properties
   // Contact and rigid bodies (built only when the scene asks for them).
   std::vector<RigidBody> rigid_bodies;

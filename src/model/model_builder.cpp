@@ -105,18 +105,28 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
     block.conn.insert(block.conn.end(), &mesh.hex[8 * e], &mesh.hex[8 * e] + 8);
     block.element_id.push_back(Index(e + 1));
   }
-  // Tagged interfaces have duplicated (coincident) nodes. Until the tiebreak subsystem can hold
-  // them together, bond them: the upper ply's elements use the lower partner nodes, so the laminate
-  // is one body (perfectly bonded plies) instead of a stack of loose sheets. The duplicates remain
-  // as unused, massless nodes; Model::interfaces keeps the pairs for the tiebreak subsystem.
+  // Tagged interfaces have duplicated (coincident) nodes. An interface with a tiebreak law keeps
+  // them apart: each ply's elements use their own nodes (so each node's lumped mass comes from its
+  // own ply) and the interface contributor holds the pairs together. An interface without a law
+  // (`model: merged`) is bonded: the upper ply's elements use the lower partner nodes, so the
+  // laminate is one body; the upper duplicates remain as unused, massless nodes.
+  const auto law_of = [&](const mesh::Interface& itf) -> std::optional<config::InterfaceLawSpec> {
+    if (!scene.laminate) return std::nullopt;
+    const auto& laws = scene.laminate->interface_law;
+    const std::size_t k = std::size_t(itf.id - 1);
+    return k < laws.size() ? laws[k] : std::nullopt;
+  };
   if (!mesh.interfaces.empty()) {
     std::vector<Index> partner(mesh.num_nodes());
     for (std::size_t i = 0; i < partner.size(); ++i) partner[i] = Index(i);
-    for (const auto& itf : mesh.interfaces)
+    for (const auto& itf : mesh.interfaces) {
+      if (law_of(itf)) continue;
       for (std::size_t k = 0; k < itf.upper_nodes.size(); ++k) partner[itf.upper_nodes[k]] = itf.lower_nodes[k];
-    for (auto& block : model.blocks)
-      for (Index& node : block.conn) node = partner[node];
-    model.interfaces_bonded = true;
+      model.interfaces_bonded = true;
+    }
+    if (model.interfaces_bonded)
+      for (auto& block : model.blocks)
+        for (Index& node : block.conn) node = partner[node];
   }
 
   // Geometry checks, reference volumes, lumped masses and material orientations.
@@ -247,7 +257,10 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
   }
 
   model.element_ply = mesh.element_ply;
-  for (const auto& itf : mesh.interfaces) model.interfaces.push_back(make_interface(itf, model.X));
+  for (const auto& itf : mesh.interfaces) {
+    model.interfaces.push_back(make_interface(itf, model.X));
+    model.interfaces.back().tiebreak = law_of(itf);
+  }
   if (mesh.impactor) model.impactor = make_impactor(*mesh.impactor);
   add_rigid_bodies_and_contacts(scene, model);
   model.schedule = make_schedule(model.blocks, num_nodes);

@@ -33,16 +33,7 @@ std::vector<Subsystem> subsystems(const Model& model) {
   for (const auto& c : model.constraints) (c.curve < 0 ? fixed : prescribed)++;
   list.push_back({"boundary_conditions", !model.constraints.empty(),
                   std::to_string(fixed) + " fixed dof, " + std::to_string(prescribed) + " prescribed-velocity dof"});
-  if (model.interfaces.empty()) {
-    list.push_back({"delamination", false, "left out: no delaminating interface, so no interface node is duplicated"});
-  } else {
-    std::size_t pairs = 0;
-    for (const auto& i : model.interfaces) pairs += i.lower_nodes.size();
-    list.push_back({"delamination", false,
-                    std::to_string(model.interfaces.size()) + " interface(s) tagged with " + std::to_string(pairs) +
-                        " duplicated node pairs; tiebreak is not implemented yet, so these interfaces are bonded "
-                        "(the plies share the pair's lower node) and cannot delaminate"});
-  }
+  // delamination: described by the interface contributor (interface/interface_tiebreaks.hpp).
   std::string eroding;
   for (const auto& m : model.materials)
     if (m.kind == MaterialKind::CompositeDamage || (m.kind == MaterialKind::Plastic && m.plastic.failure_strain > 0))

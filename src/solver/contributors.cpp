@@ -1,5 +1,6 @@
 #include "solver/contributors.hpp"
 
+#include "interface/interface_tiebreaks.hpp"
 #include "solver/gravity.hpp"
 #include "solver/penalty_contacts.hpp"
 #include "solver/rigid_body_coupling.hpp"
@@ -20,6 +21,9 @@ const std::vector<ContributorType>& contributor_types() {
        }},
       {&RigidBodyCoupling::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
          return std::make_unique<RigidBodyCoupling>(s.model, *s.bodies, s.node_body, s.contributors);
+       }},
+      {&interface::InterfaceTiebreaks::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
+         return std::make_unique<interface::InterfaceTiebreaks>(s.model, s.dt_element);
        }},
   };
   return types;
