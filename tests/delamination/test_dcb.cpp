@@ -6,7 +6,8 @@
 // prescribed velocities that ramp up smoothly (1 - cos over several periods of the arms' first
 // bending mode, so the response is quasi-static), then stay constant.
 //
-// Independent answers (corrected beam theory: Williams 1989, Int. J. Fract. 39:57; ASTM D5528):
+// Independent answers (corrected beam theory: J. G. Williams, "End corrections for orthotropic DCB specimens",
+// Compos. Sci. Technol. 35 (1989) 367-376; ASTM D5528):
 //   compliance  C = delta / P = 8 (a + Delta)^3 / (E11 b h^3),
 //               Delta = chi h, chi = sqrt(E11 / (11 G13) (3 - 2 (Gamma / (1 + Gamma))^2)),
 //               Gamma = 1.18 sqrt(E11 E22) / G13 (root rotation of the arms);
