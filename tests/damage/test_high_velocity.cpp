@@ -5,8 +5,10 @@
 // erosion bookkeeping keeps eroded energy in the totals (tolerance 2 %: penalty contact and
 // erosion release energy in steps; a runaway would exceed it by orders of magnitude). The plate's
 // angle-change interfaces carry the seed's stiff Table 8.2 tiebreak (CN = 1.5e5 kN/mm^3, whose
-// pairs set a step 17.6x below the elements'): it must stay stable through perforation, dissipate
-// energy (the plies around the hole delaminate) and never hold a negative energy.
+// pairs set a step 17.6x below the elements'): the run must stay stable through perforation with
+// them and never hold a negative interface energy. (Table 8.2's strengths, NFLS 1357 MPa and SFLS
+// 10590 MPa, exceed what the plies carry: the plies erode at their strains to failure before any
+// pair reaches onset, so nothing delaminates in this scene.)
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -45,7 +47,6 @@ TEST(HighVelocity, SteelSphereThroughCompositePlateIsStable) {
     ASSERT_NE(at, std::string::npos) << key;
     const double value = std::stod(json.str().substr(at + std::string(key).size()));
     EXPECT_GE(value, 0.0) << key;
-    if (std::string(key).find("dissipated") != std::string::npos) EXPECT_GT(value, 0.0);
   }
   std::filesystem::remove_all(dir);
 }
