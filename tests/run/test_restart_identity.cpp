@@ -9,11 +9,16 @@
 // Scenes (restart_scenes.hpp): an eroding impact on a *MAT_054 plate by a rigid sphere, split
 // after erosion has begun with the contact active; a plate with a tiebreak interface.
 // Also: a completed run extended with a later termination time continues its history and frame
-// numbering; dumps are written every output.restart_interval.
+// numbering; dumps are written at the first cycle past every output.restart_interval mark and at
+// the end.
 #include <gtest/gtest.h>
 
+#include "config/scene_loader.hpp"
+#include "mesh/scene_mesher.hpp"
 #include "output/history_table.hpp"
 #include "restart_scenes.hpp"
+#include "run/restart_dump.hpp"
+#include "run/run.hpp"
 
 namespace plyimpact {
 namespace {
@@ -102,15 +107,45 @@ TEST(RestartIdentity, CompletedRunIsExtendedWithALaterTerminationTime) {
   EXPECT_GT(history.at(history.rows() - 1, 0), 3.0e-6 - 1.5 * 5.0e-8);
 }
 
-TEST(RestartIdentity, DumpsAreWrittenAtTheRestartInterval) {
+// Watches restart.dump while the loop runs: the times of the dumps seen, and the first cycle time
+// at or past each interval mark.
+class DumpWatch : public run::RunObserver {
+ public:
+  DumpWatch(fs::path file, std::uint64_t identity, double interval)
+      : file_(std::move(file)), identity_(identity), interval_(interval) {}
+  void after_cycle(const solver::Solver& solver) override {
+    const double t = solver.state().time;
+    if (t >= (double(expected.size()) + 1) * interval_ * (1 - 1e-12)) expected.push_back(t);
+    if (!fs::exists(file_)) return;
+    const double dumped = run::load_dump(file_, identity_).info.time;
+    if (seen.empty() || seen.back() != dumped) seen.push_back(dumped);
+  }
+  std::vector<double> seen, expected;
+
+ private:
+  fs::path file_;
+  std::uint64_t identity_;
+  double interval_;
+};
+
+TEST(RestartIdentity, DumpsAreWrittenAtTheRestartIntervalAndAtTheEnd) {
   test::TestDir tmp;
-  const fs::path scene = test::write_file(tmp / "dumps.yaml", test::kTiebreakScene);
-  const std::string dir = (tmp / "out").string();
-  // Stopped before its end: the last dump is the one at 1 us (an interval), not at the stop.
-  // Written at the stop too, so compare the dump's time with the stop's through the summary.
-  const auto r = plyimpact({"run", scene.string(), "-o", dir, "--set", "output.restart_interval=1.0e-6"});
-  ASSERT_EQ(r.code, 0) << r.out << r.err;
-  EXPECT_TRUE(fs::exists(tmp / "out" / "restart.dump"));
+  const config::Scene scene = config::load_scene_from_string(test::kTiebreakScene, "dumps.yaml");
+  const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
+  run::LoopOptions loop;
+  loop.dump_file = tmp / "restart.dump";
+  loop.dump_interval = 1.0e-6;
+  loop.identity = 42;
+  DumpWatch watch(loop.dump_file, loop.identity, loop.dump_interval);
+  const run::RunReport report = run::run_loop(model, {&watch}, loop);
+  ASSERT_TRUE(report.completed) << report.stop_reason;
+  // Marks at 1 and 2 us seen during the run (the one at 3 us is the end: after the last cycle).
+  ASSERT_EQ(watch.expected.size(), 3u);
+  watch.expected.pop_back();
+  EXPECT_EQ(watch.seen, watch.expected);
+  const run::LoadedDump last = run::load_dump(loop.dump_file, loop.identity);
+  EXPECT_EQ(last.info.time, report.end_time);
+  EXPECT_EQ(last.info.cycle, report.cycles);
 }
 
 }  // namespace
