@@ -21,12 +21,6 @@ struct Marker {
   std::string identity;  // hex
 };
 
-std::string hex(std::uint64_t v) {
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
 Marker read_marker(const fs::path& dir) {
   Marker m;
   std::ifstream in(dir / kFolderMarker);
@@ -102,7 +96,7 @@ void prepare_output_folder(const fs::path& dir, const std::string& scene_name, s
   if (ec) throw RunError(msg() << "cannot create the output folder '" << dir.string() << "': " << ec.message());
   output::remove_stale_temporaries(dir);
   const Marker marker = read_marker(dir);
-  const bool ours = marker.present && marker.scene == scene_name && marker.identity == hex(identity);
+  const bool ours = marker.present && marker.scene == scene_name && marker.identity == identity_text(identity);
   Results results = list_results(dir, scene_name, ours);
   if (use.replace) {
     remove_files(results.own);
@@ -121,7 +115,7 @@ void prepare_output_folder(const fs::path& dir, const std::string& scene_name, s
     remove_files(results.own);  // a new run of this scene: no frame of an earlier run stays
   }
   output::write_text_atomically(dir / kFolderMarker,
-                                "program plyimpact\nscene " + scene_name + "\nrun_identity " + hex(identity) + "\n");
+                                "program plyimpact\nscene " + scene_name + "\nrun_identity " + identity_text(identity) + "\n");
 }
 
 OutputFolderGuard::~OutputFolderGuard() { output::remove_stale_temporaries(dir_); }

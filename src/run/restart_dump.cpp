@@ -37,12 +37,6 @@ std::vector<char> this_version() {
   return {v.begin(), v.end()};
 }
 
-std::string hex(std::uint64_t v) {
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
 void visit_run(StateVisitor& v, solver::Solver& solver, const std::vector<RunObserver*>& observers) {
   solver.visit_state(v);
   StateGroup group(v, "run");
@@ -59,8 +53,8 @@ DumpInfo read_header(StateReader& reader, const std::filesystem::path& dump, std
                            << h.format << "); this is plyimpact " << PLYIMPACT_VERSION << " (dump format "
                            << kDumpFormat << "); allowed a dump written by this program version: rerun the scene");
   if (h.identity != identity)
-    throw InputError(msg() << dump.string() << ": restart dump of another scene (run identity " << hex(h.identity)
-                           << ", this scene " << hex(identity)
+    throw InputError(msg() << dump.string() << ": restart dump of another scene (run identity " << identity_text(h.identity)
+                           << ", this scene " << identity_text(identity)
                            << "); allowed a dump of this scene with the same settings and mesh: only "
                               "control.termination_time, control.max_cycles, control.threads and the output "
                               "intervals may change on a restart");
@@ -68,6 +62,12 @@ DumpInfo read_header(StateReader& reader, const std::filesystem::path& dump, std
 }
 
 }  // namespace
+
+std::string identity_text(std::uint64_t identity) {
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(identity));
+  return buf;
+}
 
 std::uint64_t run_identity(std::uint64_t scene_digest, const model::Model& model) {
   StateDigest d;

@@ -30,6 +30,9 @@ inline constexpr const char* kDumpFileName = "restart.dump";
 // from a file changes the model without changing the scene text).
 std::uint64_t run_identity(std::uint64_t scene_digest, const model::Model& model);
 
+// An identity as 16 hex digits (messages, the output folder's marker).
+std::string identity_text(std::uint64_t identity);
+
 struct DumpInfo {
   std::string version;      // program version that wrote it
   std::uint64_t format = 0;

@@ -1,6 +1,6 @@
 #include "run/stop_signals.hpp"
 
-#include <cstring>
+#include <atomic>
 
 #include "core/error.hpp"
 
@@ -8,16 +8,20 @@ namespace plyimpact::run {
 
 namespace {
 
-volatile std::sig_atomic_t g_received = 0;
-volatile std::sig_atomic_t g_installed = 0;  // only touched outside handlers
+// A lock-free atomic is async-signal-safe (C++17 [support.signal]) and, unlike a volatile
+// sig_atomic_t, also well defined when the handler runs on an OpenMP worker thread while the main
+// thread reads the flag.
+std::atomic<int> g_received{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+bool g_installed = false;  // only touched outside handlers
 
-extern "C" void on_stop_signal(int signal) { g_received = signal; }
+extern "C" void on_stop_signal(int signal) { g_received.store(signal, std::memory_order_relaxed); }
 
 }  // namespace
 
 StopSignals::StopSignals() {
   if (g_installed) throw RunError("internal: the stop-signal handlers are already installed");
-  g_received = 0;
+  g_received.store(0);
   struct sigaction action {};
   action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);
@@ -25,16 +29,16 @@ StopSignals::StopSignals() {
   action.sa_flags = SA_RESETHAND | SA_RESTART;
   sigaction(SIGINT, &action, &previous_int_);
   sigaction(SIGTERM, &action, &previous_term_);
-  g_installed = 1;
+  g_installed = true;
 }
 
 StopSignals::~StopSignals() {
   sigaction(SIGINT, &previous_int_, nullptr);
   sigaction(SIGTERM, &previous_term_, nullptr);
-  g_installed = 0;
+  g_installed = false;
 }
 
-int StopSignals::received() { return g_received; }
+int StopSignals::received() { return g_received.load(std::memory_order_relaxed); }
 
 std::string StopSignals::name(int signal) {
   if (signal == SIGINT) return "SIGINT";
