@@ -63,7 +63,7 @@ std::uint64_t scene_digest_from_string(const std::string& yaml_text, const std::
   if (root.IsMap()) {
     root.remove("output");
     const YAML::Node& lookup = root;  // a const lookup adds no empty key
-    if (YAML::Node control = lookup["control"]; control.IsMap())
+    if (YAML::Node control = lookup["control"]; control.IsDefined() && control.IsMap())
       for (const char* key : {"termination_time", "max_cycles", "threads"}) control.remove(key);
   }
   std::string text;
