@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "run/frame_writer.hpp"
 #include "run/history_writer.hpp"
+#include "run/interface_frame_writer.hpp"
 #include "run/progress_line.hpp"
 #include "run/run_checks.hpp"
 #include "run/summary_writer.hpp"
@@ -67,6 +68,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
 
   HistoryWriter history(model, options.output_dir / "history.csv", history_interval, frame_interval);
   FrameWriter frames(model, options.output_dir, frame_interval);
+  InterfaceFrameWriter interfaces(model, options.output_dir, frame_interval);
   HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
   ContactEnergyCheck contact_energy(model);
   EnergyRatioCheck energy_ratio;
@@ -75,7 +77,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   if (options.progress) progress = std::make_unique<ProgressLine>(*options.progress, options.progress_in_place, t_end, t_start);
 
   // Stop order is the order of the warnings in summary.json; the summary comes last.
-  std::vector<RunObserver*> observers = {&frames, &history};
+  std::vector<RunObserver*> observers = {&frames, &interfaces, &history};
   if (progress) observers.push_back(progress.get());
   for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &energy_ratio, &summary})
     observers.push_back(o);
