@@ -127,12 +127,13 @@ void InterfaceFrameWriter::write_cscan(const solver::Solver& solver, RunReport& 
     d.total_area += area;
     layers.push_back(std::move(layer));
   }
-  d.cscan_pitch = output::cscan_pitch(layers);
-  const output::CscanMap map = output::make_cscan(layers, d.cscan_pitch);
-  d.projected_area = map.projected_area();
   report.delamination = d;
   const double t = solver.state().time;
   try {
+    d.cscan_pitch = output::cscan_pitch(layers);
+    const output::CscanMap map = output::make_cscan(layers, d.cscan_pitch);
+    d.projected_area = map.projected_area();
+    report.delamination = d;
     output::write_cscan_vtu(map, top, t, dir_ / "cscan.vtu");
     report.cscan_vtu = dir_ / "cscan.vtu";
     std::ostringstream title;

@@ -1,7 +1,9 @@
 // Runs a built model to its termination time. The time loop (run_loop) only steps the solver and
 // hands it to observers (run/run_observer.hpp); run_model adds the standard ones, which write the
 // results into one directory:
-//   <scene>.pvd + <scene>_NNNN.vtu (frames), history.csv (energies, dt, reactions), summary.json.
+//   <scene>.pvd + <scene>_NNNN.vtu (frames), history.csv (energies, dt, reactions), summary.json;
+//   with delaminating interfaces also interfaces.pvd (their surface series) and the C-scan map
+//   cscan.vtu + cscan.png (run/interface_frame_writer.hpp).
 // Every file is written atomically and rewritten as the run goes, so a run that stops early keeps
 // everything written so far and summary.json says why it stopped.
 #pragma once
