@@ -29,12 +29,15 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 
 #include "config/scene_loader.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
+#include "output/json_reader.hpp"
 #include "run/interface_frame_writer.hpp"
+#include "run/run.hpp"
 #include "scratch_dir.hpp"
 #include "solver/solver.hpp"
 
@@ -245,6 +248,46 @@ TEST(InterfaceOutput, OpeningTractionAndMixityOfAKnownSeparation) {
       EXPECT_NEAR(x[2], 1e-3 - kDepth[2] + 0.5 * delta, 1e-15) << "the mid-surface of the pair";
     }
   }
+}
+
+std::vector<std::string> timesteps(const fs::path& pvd) {
+  const std::string text = test::slurp(pvd);
+  const std::regex attr("timestep=\"([^\"]*)\"");
+  std::vector<std::string> out;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), attr); it != std::sregex_iterator(); ++it)
+    out.push_back((*it)[1]);
+  return out;
+}
+
+// Through the run: the interface series has the ply frames' times, and summary.json carries the
+// areas with their units and names the files.
+TEST(InterfaceOutput, RunWritesTheSeriesAtTheFrameTimesAndTheAreasInTheSummary) {
+  test::ScratchDir dir;
+  model::Model model = build();
+  model.control.termination_time = 2e-7;
+  model.output.interval = 5e-8;
+  run::RunOptions options;
+  options.output_dir = dir.path();
+  const run::RunReport report = run::run_model(model, options);
+  ASSERT_TRUE(report.completed) << report.stop_reason;
+  const auto plies = timesteps(dir.path() / (model.name + ".pvd")), interfaces = timesteps(dir.path() / "interfaces.pvd");
+  EXPECT_GE(plies.size(), 5u);
+  EXPECT_EQ(interfaces, plies);
+  const output::Json summary = output::read_json_file(dir.path() / "summary.json");
+  const output::Json* d = summary.find("delamination");
+  ASSERT_TRUE(d);
+  EXPECT_EQ(d->find("units")->find("area")->as_string(), "m^2");
+  EXPECT_NEAR(d->find("delaminated_area")->as_number(), kCrack1.area() + kCrack3.area(), 1e-12 * 8e-6);
+  EXPECT_NEAR(d->find("projected_delaminated_area")->as_number(), kCrack1.area() + kCrack3.area() - kOverlap,
+              1e-12 * 8e-6);
+  const auto& per = d->find("interfaces")->as_array();
+  ASSERT_EQ(per.size(), 3u);
+  EXPECT_EQ(per[2].find("name")->as_string(), "interface_3 (plies 3/4, 0/90)");
+  EXPECT_NEAR(per[2].find("delaminated_area")->as_number(), kCrack3.area(), 1e-12 * 8e-6);
+  const output::Json* files = summary.find("files");
+  EXPECT_EQ(files->find("interfaces")->as_string(), "interfaces.pvd");
+  EXPECT_EQ(files->find("cscan_png")->as_string(), "cscan.png");
+  EXPECT_TRUE(fs::exists(dir.path() / "cscan.vtu"));
 }
 
 }  // namespace
