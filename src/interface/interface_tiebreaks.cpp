@@ -124,6 +124,7 @@ InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_elem
     if (!itf.tiebreak) continue;
     pairs_.push_back(make_interface_pairs(model, itf));
     ids_.push_back(itf.id);
+    layouts_.push_back(pair_layout(itf));
     stable_step_ = std::min(stable_step_, pairs_.back().stable_step());
   }
   if (stable_step_ < dt_element) {

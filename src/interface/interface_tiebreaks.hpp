@@ -7,17 +7,19 @@
 // as it does the contact springs). A pre-crack is part of the initial history: the pairs whose
 // reference position lies in the region start with damage 1 (separated: contact only).
 // History: the delaminated (damage 1) area in total and per interface, pre-crack included.
+// Outputs: an InterfaceSampleSource whose sample points are the pairs (interface_output.hpp).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "cohesive/tiebreak_pairs.hpp"
+#include "interface/interface_output.hpp"
 #include "solver/force_contributor.hpp"
 
 namespace plyimpact::interface {
 
-class InterfaceTiebreaks : public solver::ForceContributor {
+class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSampleSource {
  public:
   // Active when some interface has a tiebreak law; the detail gives each law and its pair step.
   static model::Subsystem describe(const model::Model& model);
@@ -41,9 +43,14 @@ class InterfaceTiebreaks : public solver::ForceContributor {
   const std::vector<int>& interface_ids() const { return ids_; }  // 1-based number of each pairs_ entry
   double delaminated_area() const;                                 // m^2, all interfaces
 
+  std::size_t num_interfaces() const override { return pairs_.size(); }
+  const InterfaceLayout& layout(std::size_t i) const override { return layouts_[i]; }
+  void sample(std::size_t i, const double* x, cohesive::PairSample* out) const override { pairs_[i].sample(x, out); }
+
  private:
   std::vector<cohesive::TiebreakPairs> pairs_;
   std::vector<int> ids_;
+  std::vector<InterfaceLayout> layouts_;  // (pairs_.size()) for the outputs
   std::vector<std::string> warnings_;
   double stable_step_ = 0;
 };

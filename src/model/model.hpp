@@ -175,6 +175,10 @@ struct Interface {
   std::vector<Index> lower_segments, upper_segments;   // (num_segments, 4)
   // Tiebreak law (and pre-crack) of the interface; empty: its pairs are merged (bonded plies).
   std::optional<config::InterfaceLawSpec> tiebreak;
+  // Where the interface lies in the laminate, for the outputs: the angles of its two plies (rad) and
+  // its depth below the laminate's top face (m), the face the impactor strikes.
+  double lower_angle = 0, upper_angle = 0;
+  double depth = 0;
   std::size_t num_pairs() const { return lower_nodes.size(); }
 };
 

@@ -260,6 +260,13 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
   for (const auto& itf : mesh.interfaces) {
     model.interfaces.push_back(make_interface(itf, model.X));
     model.interfaces.back().tiebreak = law_of(itf);
+    if (scene.laminate) {
+      const auto& plies = scene.laminate->plies;
+      Interface& added = model.interfaces.back();
+      added.lower_angle = plies[std::size_t(itf.lower_ply)].angle;
+      added.upper_angle = plies[std::size_t(itf.upper_ply)].angle;
+      for (std::size_t p = std::size_t(itf.upper_ply); p < plies.size(); ++p) added.depth += plies[p].thickness;
+    }
   }
   if (mesh.impactor) model.impactor = make_impactor(*mesh.impactor);
   add_rigid_bodies_and_contacts(scene, model);

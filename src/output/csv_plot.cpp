@@ -130,20 +130,25 @@ void plot_csv_png(const CsvPlot& plot, const fs::path& png) {
       if (std::find(columns.begin(), columns.end(), w) == columns.end())
         throw InputError(msg() << csv.string() << ": no column '" << w << "'; allowed one of " << join(columns));
   }
+  gnuplot_png([&](const fs::path& tmp) { return script_for(plot, tmp); }, png, plot.csv.string());
+}
+
+void gnuplot_png(const std::function<std::string(const fs::path& tmp)>& script, const fs::path& png,
+                 const std::string& what) {
   const auto gnuplot = find_gnuplot();
   if (!gnuplot)
     throw RunError(msg() << "cannot plot " << png.string()
                          << ": gnuplot is not on PATH (Debian package gnuplot-nox; tools/install-deps.sh installs it)");
   write_file_atomically(png, [&](const fs::path& tmp) {
-    const fs::path script = tmp.string() + ".gp", log = tmp.string() + ".log";
-    write_text_atomically(script, script_for(plot, tmp));
-    const int status = run_gnuplot(*gnuplot, script, log);
+    const fs::path script_file = tmp.string() + ".gp", log = tmp.string() + ".log";
+    write_text_atomically(script_file, script(tmp));
+    const int status = run_gnuplot(*gnuplot, script_file, log);
     std::string message = status == 0 ? std::string() : slurp(log);
     std::error_code ec;
-    fs::remove(script, ec);
+    fs::remove(script_file, ec);
     fs::remove(log, ec);
     if (status != 0)
-      throw RunError(msg() << "gnuplot failed (exit status " << status << ") plotting " << plot.csv.string() << ": "
+      throw RunError(msg() << "gnuplot failed (exit status " << status << ") plotting " << what << ": "
                            << trim(message));
     if (fs::file_size(tmp, ec) == 0) throw RunError(msg() << "gnuplot wrote an empty image for " << png.string());
   });

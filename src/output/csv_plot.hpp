@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -36,6 +37,12 @@ std::optional<std::filesystem::path> find_gnuplot();
 /// Column names of a CSV file: its first non-empty line not starting with '#', split at commas.
 /// @throws InputError when the file cannot be read or has no header
 std::vector<std::string> csv_columns(const std::filesystem::path& csv);
+
+/// Runs gnuplot on the script `script(tmp)`, which must draw a PNG into the file `tmp`, and replaces
+/// `png` with it atomically. `what` names the plot in errors.
+/// @throws RunError when gnuplot is missing or fails (with its message) or writes an empty image
+void gnuplot_png(const std::function<std::string(const std::filesystem::path& tmp)>& script,
+                 const std::filesystem::path& png, const std::string& what);
 
 /// Writes `png` from `plot`.
 /// @throws InputError for an unknown column (naming the file and the columns it has),

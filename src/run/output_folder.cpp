@@ -54,13 +54,30 @@ struct Results {
   std::vector<fs::path> own, foreign;
 };
 
+// The delamination outputs (run/interface_frame_writer.hpp) carry fixed names, not the scene's.
+bool is_interface_output(const std::string& file) {
+  return file == "interfaces.pvd" || file == "cscan.vtu" || file == "cscan.png";
+}
+
+// interfaces/interfaces_NNNN.vtm and interfaces_NNNN_III.vtu, the interface series' blocks.
+bool is_interface_block(const std::string& file) {
+  return file.starts_with("interfaces_") && (file.ends_with(".vtm") || file.ends_with(".vtu"));
+}
+
 Results list_results(const fs::path& dir, const std::string& scene_name, bool marker_is_ours) {
   Results r;
   std::error_code ec;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
     const std::string file = it->path().filename().string();
+    if (file == "interfaces" && it->is_directory()) {
+      std::error_code ec2;
+      for (fs::directory_iterator b(it->path(), ec2), bend; !ec2 && b != bend; b.increment(ec2))
+        if (b->is_regular_file() && is_interface_block(b->path().filename().string()))
+          (marker_is_ours ? r.own : r.foreign).push_back(b->path());
+      continue;
+    }
     if (file == kFolderMarker || !it->is_regular_file() || !is_result_file(file)) continue;
-    const bool series = file.ends_with(".vtu") || file.ends_with(".pvd");  // named after their scene
+    const bool series = (file.ends_with(".vtu") || file.ends_with(".pvd")) && !is_interface_output(file);  // named after their scene
     const bool named_ours = !series || is_frame_of(file, scene_name) || file == scene_name + ".pvd";
     (marker_is_ours && named_ours ? r.own : r.foreign).push_back(it->path());
   }
@@ -86,7 +103,7 @@ std::string some_names(const std::vector<fs::path>& files) {
 
 bool is_result_file(const std::string& file) {
   return file == "history.csv" || file == "summary.json" || file == kDumpFileName || file == kFolderMarker ||
-         (file.ends_with(".pvd") && file.size() > 4) || is_any_frame(file);
+         (file.ends_with(".pvd") && file.size() > 4) || is_any_frame(file) || is_interface_output(file);
 }
 
 void prepare_output_folder(const fs::path& dir, const std::string& scene_name, std::uint64_t identity,

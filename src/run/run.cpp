@@ -11,6 +11,7 @@
 #include "run/frame_writer.hpp"
 #include "run/history_writer.hpp"
 #include "run/output_folder.hpp"
+#include "run/interface_frame_writer.hpp"
 #include "run/progress_line.hpp"
 #include "run/restart_dump.hpp"
 #include "run/run_checks.hpp"
@@ -101,6 +102,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
 
   HistoryWriter history(model, options.output_dir / "history.csv", history_interval);
   FrameWriter frames(model, options.output_dir, frame_interval);
+  InterfaceFrameWriter interfaces(model, options.output_dir, frame_interval);
   HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
   ContactEnergyCheck contact_energy(model);
   EnergyRatioCheck energy_ratio;
@@ -109,7 +111,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   if (options.progress) progress = std::make_unique<ProgressLine>(*options.progress, options.progress_in_place, t_end, t_start);
 
   // Stop order is the order of the warnings in summary.json; the summary comes last.
-  std::vector<RunObserver*> observers = {&frames, &history};
+  std::vector<RunObserver*> observers = {&frames, &interfaces, &history};
   if (progress) observers.push_back(progress.get());
   for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &energy_ratio, &summary})
     observers.push_back(o);

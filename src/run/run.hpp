@@ -2,7 +2,8 @@
 // hands it to observers (run/run_observer.hpp); run_model adds the standard ones, which write the
 // results into one folder that the run owns (run/output_folder.hpp):
 //   <scene>.pvd + <scene>_NNNN.vtu (frames), history.csv (energies, dt, reactions), summary.json,
-//   restart.dump (run/restart_dump.hpp).
+//   restart.dump (run/restart_dump.hpp); with delaminating interfaces also interfaces.pvd (their
+//   surface series) and the C-scan map cscan.vtu + cscan.png (run/interface_frame_writer.hpp).
 // Every file is written atomically (history.csv grows by whole rows in between), so a run that
 // stops early keeps everything written so far and summary.json says why it stopped. A run ends
 // early on SIGINT/SIGTERM (run/stop_signals.hpp) as on max_cycles: the current frame, the history,

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,20 @@
 #include "solver/solver.hpp"
 
 namespace plyimpact::run {
+
+// Delaminated areas at the stop (tiebreak or other delaminating interfaces), for summary.json.
+struct DelaminationReport {
+  struct Interface {
+    int id = 0;
+    std::string label;        // "interface_3 (plies 3/4, 45/-45)"
+    double depth = 0;         // m below the impacted face
+    double area = 0;          // m^2 separated (damage 1)
+  };
+  std::vector<Interface> interfaces;
+  double total_area = 0;      // m^2, sum over the interfaces
+  double projected_area = 0;  // m^2, union of their projections on the plate plane (the C-scan)
+  double cscan_pitch = 0;     // m, raster cell side of the C-scan
+};
 
 struct RunReport {
   bool completed = false;
@@ -32,6 +47,8 @@ struct RunReport {
   double energy_ratio = 1;
   std::vector<std::string> warnings;
   std::filesystem::path pvd, history, summary, dump;
+  std::filesystem::path interfaces_pvd, cscan_vtu, cscan_png;  // empty when not written
+  std::optional<DelaminationReport> delamination;               // scenes with delaminating interfaces
 };
 
 class RunObserver {

@@ -10,6 +10,34 @@
 
 namespace plyimpact::run {
 
+namespace {
+
+// Areas in m^2 and depths in m, as everywhere in the summary; the units member says so.
+output::Json delamination_json(const DelaminationReport& d) {
+  output::Json j = output::Json::object();
+  output::Json units = output::Json::object();
+  units["area"] = "m^2";
+  units["depth"] = "m below the impacted face";
+  units["cscan_pitch"] = "m";
+  j["units"] = units;
+  j["delaminated_area"] = d.total_area;
+  j["projected_delaminated_area"] = d.projected_area;
+  j["cscan_pitch"] = d.cscan_pitch;
+  output::Json per = output::Json::array();
+  for (const auto& i : d.interfaces) {
+    output::Json e = output::Json::object();
+    e["id"] = i.id;
+    e["name"] = i.label;
+    e["depth"] = i.depth;
+    e["delaminated_area"] = i.area;
+    per.push_back(e);
+  }
+  j["interfaces"] = per;
+  return j;
+}
+
+}  // namespace
+
 void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
   const model::Model& model = model_;
   report.summary = file_;
@@ -63,10 +91,14 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     erosion["by_part_and_cause"] = by_part;
     j["erosion"] = erosion;
   }
+  if (report.delamination) j["delamination"] = delamination_json(*report.delamination);
   j["files"] = output::Json::object();
   j["files"]["pvd"] = report.pvd.filename().string();
   j["files"]["history"] = report.history.filename().string();
   if (!report.dump.empty()) j["files"]["restart_dump"] = report.dump.filename().string();
+  if (!report.interfaces_pvd.empty()) j["files"]["interfaces"] = report.interfaces_pvd.filename().string();
+  if (!report.cscan_vtu.empty()) j["files"]["cscan_vtu"] = report.cscan_vtu.filename().string();
+  if (!report.cscan_png.empty()) j["files"]["cscan_png"] = report.cscan_png.filename().string();
   output::write_json_atomically(file_, j);
 }
 
