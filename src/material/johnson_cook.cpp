@@ -122,8 +122,10 @@ JohnsonCookResult johnson_cook_update(const JohnsonCookParams& p, const double R
       ep += dep;
     }
   }
-  // Plastic work sigma_y dep per current volume; per reference volume times V. Its TQC share heats.
-  const double work = sigma_y * dep * V;
+  // Plastic work per current volume with the trapezoid rule on the effective stress (the rule of
+  // the element's stress work, so stress work = elastic energy + plastic work holds step by step);
+  // per reference volume times V. Its TQC share heats.
+  const double work = dep > 0 ? 0.5 * (std::sqrt(1.5 * contract(s_old, s_old)) + sigma_y) * dep * V : 0.0;
   h[kPlasticWork] += work;
   if (p.thermal()) h[kTemperatureRise] += p.TQC * work / (p.rho0 * p.CP);
 

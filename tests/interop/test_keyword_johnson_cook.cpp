@@ -71,7 +71,9 @@ rigid_walls:
 )";
   const auto conv = keyword::convert_deck_file((kDecks / "rod_wall_jc.k").string(), "SI", dir / "deck.yaml");
   for (const auto& e : conv.coverage)
-    if (e.keyword == "EOS_GRUNEISEN") EXPECT_EQ(e.status, "mapped") << e.note;
+    if (e.keyword == "EOS_GRUNEISEN") {
+      EXPECT_EQ(e.status, "mapped") << e.note;
+    }
   const std::string text = test::read_file(dir / "deck.yaml");
   EXPECT_NE(text.find("eos: {card: EOS_GRUNEISEN, C: 3940, S1: 1.489, GAMAO: 2.02, A: 0.47}"), std::string::npos) << text;
   const std::string a = test::run_history(config::load_scene((dir / "deck.yaml").string()), dir / "deck_run");
