@@ -62,7 +62,10 @@ double return_increment(const JohnsonCookParams& p, double sbar, double ep, doub
     (gx > 0 ? lo : hi) = x;
     double next = x - gx / slope;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (hi - lo <= 1e-15 * std::max(hi, 1e-30)) return next;
+    if (hi - lo <= 1e-15 * std::max(hi, 1e-30)) {
+      g(next, slope);  // sigma_y of the returned increment
+      return next;
+    }
     x = next;
   }
   g(x, slope);
