@@ -14,11 +14,14 @@
 namespace plyimpact::config::detail {
 namespace {
 
-// Density field of the metal cards a deformable impactor may use (MAT_001, MAT_003, MAT_024).
+// Density field of the metal cards a deformable impactor may use (MAT_001, MAT_003, MAT_024, MAT_015,
+// MAT_098).
 double* density_of(MaterialSpec& m) {
   if (auto* e = std::get_if<MatElastic>(&m.params)) return &e->RO;
   if (auto* p = std::get_if<MatPlasticKinematic>(&m.params)) return &p->RO;
   if (auto* p = std::get_if<MatPiecewiseLinear>(&m.params)) return &p->RO;
+  if (auto* p = std::get_if<MatJohnsonCook>(&m.params)) return &p->RO;
+  if (auto* p = std::get_if<MatSimplifiedJohnsonCook>(&m.params)) return &p->RO;
   return nullptr;
 }
 const double* density_of(const MaterialSpec& m) { return density_of(const_cast<MaterialSpec&>(m)); }
@@ -490,7 +493,7 @@ void read_impactor(const Reader& r, Scene& scene) {
     imp.material = m->as_name();
     mat = find_material(scene, imp.material);
     if (!mat) m->fail("unknown material", "one of the materials: " + join(names_of(scene.materials)));
-    if (!density_of(*mat)) m->fail("the impactor material must be a metal card", "a MAT_001, MAT_003 or MAT_024 material");
+    if (!density_of(*mat)) m->fail("the impactor material must be a metal card", "a MAT_001, MAT_003, MAT_024, MAT_015 or MAT_098 material");
   }
   const bool has_mass = r.has("mass"), has_density = r.has("density");
   if (has_mass && has_density) r.at("density", "").fail("give mass or density, not both", "mass or density");

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cohesive/law_parameters.hpp"
+#include "config/johnson_cook_spec.hpp"
 #include "config/mat054_spec.hpp"
 #include "config/material_axes.hpp"
 #include "core/error.hpp"
@@ -68,7 +69,8 @@ struct MatPiecewiseLinear {
 struct MaterialSpec {
   std::string name;
   std::string card;  // "MAT_001", "MAT_002" or "MAT_020" (LS-DYNA keyword number)
-  std::variant<MatElastic, MatOrthotropicElastic, MatRigid, MatPlasticKinematic, MatPiecewiseLinear, MatCompositeDamage>
+  std::variant<MatElastic, MatOrthotropicElastic, MatRigid, MatPlasticKinematic, MatPiecewiseLinear, MatCompositeDamage,
+               MatJohnsonCook, MatSimplifiedJohnsonCook>
       params;
   SourceLocation where;
 };

@@ -1,6 +1,7 @@
 // Scene loader: one small function per YAML section on top of detail::Reader. See scene_loader.hpp.
 #include "config/scene_loader.hpp"
 
+#include "config/johnson_cook_reader.hpp"
 #include "config/mat054_reader.hpp"
 #include "config/orthotropic_card.hpp"
 
@@ -68,7 +69,8 @@ OutputSpec read_output(const Reader& r) {
 std::string read_card(const Reader& r) {
   const std::string allowed =
       "MAT_001 (ELASTIC), MAT_002 (ORTHOTROPIC_ELASTIC), MAT_003 (PLASTIC_KINEMATIC), MAT_020 (RIGID), MAT_024 "
-      "(PIECEWISE_LINEAR_PLASTICITY), MAT_054 / MAT_055 (ENHANCED_COMPOSITE_DAMAGE)";
+      "(PIECEWISE_LINEAR_PLASTICITY), MAT_054 / MAT_055 (ENHANCED_COMPOSITE_DAMAGE), MAT_015 (JOHNSON_COOK), MAT_098 "
+      "(SIMPLIFIED_JOHNSON_COOK)";
   const Reader c = r.at("card", allowed);
   c.require_scalar(allowed);
   std::string s = c.node().Scalar();
@@ -81,6 +83,8 @@ std::string read_card(const Reader& r) {
   if (s == "MAT_054" || s == "MAT_ENHANCED_COMPOSITE_DAMAGE" || s == "ENHANCED_COMPOSITE_DAMAGE") return "MAT_054";
   if (s == "MAT_055") return "MAT_055";
   if (s == "MAT_024" || s == "MAT_PIECEWISE_LINEAR_PLASTICITY" || s == "PIECEWISE_LINEAR_PLASTICITY") return "MAT_024";
+  if (s == "MAT_015" || s == "MAT_JOHNSON_COOK" || s == "JOHNSON_COOK") return "MAT_015";
+  if (s == "MAT_098" || s == "MAT_SIMPLIFIED_JOHNSON_COOK" || s == "SIMPLIFIED_JOHNSON_COOK") return "MAT_098";
   c.fail("unknown material card", allowed);
 }
 
@@ -210,6 +214,10 @@ std::vector<MaterialSpec> read_materials(const Reader& r) {
       spec.params = read_piecewise_linear(m);
     else if (spec.card == "MAT_054" || spec.card == "MAT_055")
       spec.params = detail::read_mat054(m);
+    else if (spec.card == "MAT_015")
+      spec.params = detail::read_mat015(m);
+    else if (spec.card == "MAT_098")
+      spec.params = detail::read_mat098(m);
     else
       spec.params = read_orthotropic(m);
     out.push_back(std::move(spec));

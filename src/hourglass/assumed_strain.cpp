@@ -72,6 +72,9 @@ std::vector<double> assumed_strain_moduli(const model::Model& model, const model
     case model::MaterialKind::Plastic: comp = isotropic_compliance(mat.plastic.lambda, mat.plastic.shear); break;
     case model::MaterialKind::OrthotropicElastic: comp = orthotropic_compliance(mat.c_material); break;
     case model::MaterialKind::CompositeDamage: comp = orthotropic_compliance(mat.composite.C); break;
+    case model::MaterialKind::JohnsonCook:
+      comp = isotropic_compliance(mat.bulk_modulus - 2 * mat.johnson_cook.shear / 3, mat.johnson_cook.shear);
+      break;
     default: throw std::logic_error("IHQ 6: material '" + mat.name + "' has no elastic constants");
   }
   std::vector<double> out(6 * block.size());

@@ -77,10 +77,18 @@ struct Material {
   bool rigid = false;
   long lcss = 0;  // MAT_024 curve id, resolved at emission
   const Card* where = nullptr;
+  bool takes_eos = false;  // MAT_015: the parts' EOSID gives its eos block
+  std::vector<std::pair<std::string, std::string>> without_eos;  // MAT_015 E, PR: written only without an EOS
+};
+
+struct Eos {
+  std::string card;  // EOS_LINEAR_POLYNOMIAL or EOS_GRUNEISEN
+  std::vector<std::pair<std::string, std::string>> fields;
+  const Card* where = nullptr;
 };
 
 struct PartDef {
-  long pid = 0, secid = 0, mid = 0, hgid = 0;
+  long pid = 0, secid = 0, mid = 0, hgid = 0, eosid = 0;
   std::string heading;
   const Card* where = nullptr;
 };
@@ -196,6 +204,12 @@ class Converter {
         {"MAT_ENHANCED_COMPOSITE_DAMAGE", &Converter::mat_054},
         {"MAT_054", &Converter::mat_054},
         {"MAT_055", &Converter::mat_054},
+        {"MAT_JOHNSON_COOK", &Converter::mat_johnson_cook},
+        {"MAT_015", &Converter::mat_johnson_cook},
+        {"MAT_SIMPLIFIED_JOHNSON_COOK", &Converter::mat_simplified_johnson_cook},
+        {"MAT_098", &Converter::mat_simplified_johnson_cook},
+        {"EOS_LINEAR_POLYNOMIAL", &Converter::eos_linear_polynomial},
+        {"EOS_GRUNEISEN", &Converter::eos_gruneisen},
         {"SET_NODE_LIST", &Converter::set_node_list},
         {"SET_PART_LIST", &Converter::set_part_list},
         {"SET_SEGMENT", &Converter::set_segment},
@@ -230,7 +244,7 @@ class Converter {
     };
     if (base.rfind("CONTACT_", 0) == 0) {
       contact_id_card_ = strip("_ID") || strip("_TITLE");
-    } else if (base.rfind("MAT_", 0) == 0 || base == "SECTION_SOLID_TITLE" || base == "HOURGLASS_TITLE" ||
+    } else if (base.rfind("MAT_", 0) == 0 || base.rfind("EOS_", 0) == 0 || base == "SECTION_SOLID_TITLE" || base == "HOURGLASS_TITLE" ||
                base == "DEFINE_CURVE_TITLE") {
       title_line_ = strip("_TITLE");
     }
@@ -324,7 +338,7 @@ class Converter {
     if (p.pid <= 0) f.fail("PID", "a part needs a positive id");
     p.secid = f.integer("SECID", 0);
     p.mid = f.integer("MID", 0);
-    f.require_default("EOSID", 0, "equations of state");
+    p.eosid = f.integer("EOSID", 0);
     p.hgid = f.integer("HGID", 0);
     f.require_default("GRAV", 0, "gravity initialisation");
     f.require_default("ADPOPT", 0, "adaptivity");
@@ -602,6 +616,146 @@ class Converter {
       all(cards.fields(8, tens({"LCXC", "LCXT", "LCYC", "LCYT", "LCSC", "DT"})), {"LCXC", "LCXT", "LCYC", "LCYT", "LCSC", "DT"});
     }
     return "";
+  }
+
+  // *MAT_JOHNSON_COOK (*MAT_015): MID RO G E PR DTF VP RATEOP / A B N C M TM TR EPSO / CP PC SPALL IT
+  // D1 D2 D3 D4 / D5 C2/P EROD EFMIN NUMINT K EPS1. The pressure comes from the part's EOSID; E and PR
+  // (the card's shell fields) give the elastic bulk response of a part without one.
+  std::string mat_johnson_cook(const Card& c, std::string&) {
+    const FixedCards cards(c, 4, skip());
+    const Fields f1 = cards.fields(0, tens({"MID", "RO", "G", "E", "PR", "DTF", "VP", "RATEOP"}));
+    Material& m = new_material(f1, c, "MAT_015");
+    m.takes_eos = true;
+    for (const char* n : {"RO", "G"}) put(m, f1, n);
+    for (const char* n : {"E", "PR"})
+      if (!f1.blank(n)) m.without_eos.push_back({n, num(f1.real(n, 0))});
+    f1.require_default("DTF", 0, "minimum step for shell deletion");
+    flag(m, f1, "VP", {0, 1});
+    f1.require_default("RATEOP", 0, "rate forms other than Johnson-Cook's log-linear one");
+    const Fields f2 = cards.fields(1, tens({"A", "B", "N", "C", "M", "TM", "TR", "EPSO"}));
+    for (const char* n : {"A", "B", "N", "C", "M", "TM", "TR"}) put(m, f2, n);
+    epso(m, f2);
+    const Fields f3 = cards.fields(2, tens({"CP", "PC", "SPALL", "IT", "D1", "D2", "D3", "D4"}));
+    for (const char* n : {"CP", "PC", "D1", "D2", "D3", "D4"}) put(m, f3, n);
+    flag(m, f3, "SPALL", {0, 1, 2, 3});
+    flag(m, f3, "IT", {0, 1});
+    const Fields f4 = cards.fields(3, tens({"D5", "C2/P", "EROD", "EFMIN", "NUMINT", "K", "EPS1"}));
+    for (const char* n : {"D5", "EFMIN"}) put(m, f4, n);
+    f4.require_default("C2/P", 0, "second rate parameter of RATEOP 1-5");
+    if (f4.real("EROD", 0) != 0) m.fields.push_back({"EROD", "1"});  // any non-zero value: no erosion
+    f4.require_default("NUMINT", 0, "shell integration points");
+    f4.require_default("K", 0, "Couque rate term (RATEOP 5)");
+    f4.require_default("EPS1", 0, "Couque rate term (RATEOP 5)");
+    return "";
+  }
+
+  // *MAT_SIMPLIFIED_JOHNSON_COOK (*MAT_098): MID RO E PR VP EPPFR LCDM NUMINT / A B N C PSFAIL SIGMAX
+  // SIGSAT EPSO. PSFAIL 1e17, SIGMAX and SIGSAT 1e28 are the card's "none" defaults.
+  std::string mat_simplified_johnson_cook(const Card& c, std::string&) {
+    const FixedCards cards(c, 2, skip());
+    const Fields f1 = cards.fields(0, tens({"MID", "RO", "E", "PR", "VP", "EPPFR", "LCDM", "NUMINT"}));
+    Material& m = new_material(f1, c, "MAT_098");
+    for (const char* n : {"RO", "E", "PR"}) put(m, f1, n);
+    flag(m, f1, "VP", {0, 1});
+    f1.require_default("EPPFR", 0, "shell rupture strain");
+    f1.require_default("LCDM", 0, "shell damage curve");
+    f1.require_default("NUMINT", 0, "shell integration points");
+    const Fields f2 = cards.fields(1, tens({"A", "B", "N", "C", "PSFAIL", "SIGMAX", "SIGSAT", "EPSO"}));
+    for (const char* n : {"A", "B", "N", "C"}) put(m, f2, n);
+    if (!f2.blank("PSFAIL") && f2.real("PSFAIL", 0) < 1e16) put(m, f2, "PSFAIL");
+    for (const char* n : {"SIGMAX", "SIGSAT"})
+      if (!f2.blank(n) && f2.real(n, 0) < 1e27) put(m, f2, n);
+    epso(m, f2);
+    return "";
+  }
+
+  // An integer option written as a real field ("2.0" is common on these cards), one of `allowed`.
+  static void flag(Material& m, const Fields& f, const char* name, std::initializer_list<int> allowed) {
+    if (f.blank(name)) return;
+    const double v = f.real(name, 0);
+    for (int a : allowed)
+      if (v == a) {
+        if (a != 0) m.fields.push_back({name, std::to_string(a)});
+        return;
+      }
+    std::string list;
+    for (int a : allowed) list += (list.empty() ? "" : ", ") + std::to_string(a);
+    f.fail(name, "value not implemented; allowed: " + list);
+  }
+
+  // EPSO: the reference strain rate in the deck's time unit; no default is assumed when C uses it.
+  static void epso(Material& m, const Fields& f) {
+    if (!f.blank("EPSO")) put(m, f, "EPSO");
+    else if (f.real("C", 0) != 0) f.fail("EPSO", "blank with a rate coefficient C; allowed: the reference strain rate (1 for seconds)");
+  }
+
+  // *EOS_LINEAR_POLYNOMIAL: EOSID C0 C1 C2 C3 C4 C5 C6 / E0 V0.
+  std::string eos_linear_polynomial(const Card& c, std::string& status) {
+    status = "mapped";
+    const FixedCards cards(c, 2, skip());
+    const Fields f1 = cards.fields(0, tens({"EOSID", "C0", "C1", "C2", "C3", "C4", "C5", "C6"}));
+    Eos& e = new_eos(f1, c, "EOS_LINEAR_POLYNOMIAL");
+    for (const char* n : {"C0", "C1", "C2", "C3", "C4", "C5", "C6"}) put_eos(e, f1, n);
+    const Fields f2 = cards.fields(1, tens({"E0", "V0"}));
+    put_eos(e, f2, "E0");
+    if (!f2.blank("V0") && f2.real("V0", 1) != 1) f2.fail("V0", "initial relative volume other than 1 not implemented; allowed: blank or 1");
+    return "";
+  }
+
+  // *EOS_GRUNEISEN: EOSID C S1 S2 S3 GAMAO A E0 / V0 (unused) LCID.
+  std::string eos_gruneisen(const Card& c, std::string& status) {
+    status = "mapped";
+    const FixedCards cards(c, 2, skip());
+    const Fields f1 = cards.fields(0, tens({"EOSID", "C", "S1", "S2", "S3", "GAMAO", "A", "E0"}));
+    Eos& e = new_eos(f1, c, "EOS_GRUNEISEN");
+    for (const char* n : {"C", "S1", "S2", "S3", "GAMAO", "A", "E0"}) put_eos(e, f1, n);
+    const Fields f2 = cards.fields(1, tens({"V0", "UNUSED", "LCID"}));
+    if (!f2.blank("V0") && f2.real("V0", 1) != 1) f2.fail("V0", "initial relative volume other than 1 not implemented; allowed: blank or 1");
+    f2.require_default("LCID", 0, "energy deposition curve");
+    return "";
+  }
+
+  Eos& new_eos(const Fields& f, const Card& c, const std::string& card) {
+    const long id = f.integer("EOSID", 0);
+    if (id <= 0) f.fail("EOSID", "an equation of state needs a positive id");
+    if (eos_.count(id)) f.fail("EOSID", "equation of state id defined twice");
+    Eos& e = eos_[id];
+    e.card = card;
+    e.where = &c;
+    last_note_ = "the eos block of the MAT_015 material of every part with EOSID " + std::to_string(id);
+    return e;
+  }
+
+  static void put_eos(Eos& e, const Fields& f, const char* name) {
+    if (!f.blank(name)) e.fields.push_back({name, num(f.real(name, 0))});
+  }
+
+  // The eos block of material `mid` (MAT_015) from the EOSID of the parts using it, or E/PR
+  // without one; a part's EOSID on another material, or two EOSIDs for one material, are refused.
+  std::string eos_text(long mid, const Material& m) {
+    long id = 0;
+    const PartDef* first = nullptr;
+    for (long pid : part_order_) {
+      const PartDef& p = parts_.at(pid);
+      if (p.mid != mid) continue;
+      if (p.eosid != 0 && !m.takes_eos)
+        refuse(p.where, "EOSID " + std::to_string(p.eosid) + " on a *" + m.card + " part; allowed: EOSID 0 (an equation of state only with *MAT_JOHNSON_COOK)");
+      if (first && p.eosid != id)
+        refuse(p.where, "parts " + std::to_string(first->pid) + " and " + std::to_string(pid) + " give material " +
+                            std::to_string(mid) + " different EOSIDs; allowed: one equation of state per material");
+      first = &p, id = p.eosid;
+    }
+    std::string out;
+    if (id == 0) {
+      for (const auto& [key, value] : m.without_eos) out += "    " + key + ": " + value + "\n";
+      return out;
+    }
+    const auto e = eos_.find(id);
+    if (e == eos_.end()) refuse(first->where, "EOSID " + std::to_string(id) + " is not defined by an *EOS card");
+    used_eos_.insert(id);
+    out = "    eos: {card: " + e->second.card;
+    for (const auto& [key, value] : e->second.fields) out += ", " + key + ": " + value;
+    return out + "}\n";
   }
 
   // ------------------------------------------------------------------ sets, curves
@@ -1036,6 +1190,8 @@ class Converter {
       if (used_mats.insert(p.mid).second) {
         mats << "  mat_" << p.mid << ":\n    card: " << m->second.card << "\n";
         for (const auto& [key, value] : m->second.fields) mats << "    " << key << ": " << value << "\n";
+        if (m->second.takes_eos) mats << eos_text(p.mid, m->second);
+        else eos_text(p.mid, m->second);  // refuses an EOSID on its parts
         if (m->second.lcss > 0) {
           const auto& curve = curves_.find(m->second.lcss);
           if (curve == curves_.end()) refuse(m->second.where, "LCSS curve " + std::to_string(m->second.lcss) + " is not defined");
@@ -1052,6 +1208,8 @@ class Converter {
     }
     for (const auto& [id, m] : materials_)
       if (!used_mats.count(id)) refuse(m.where, "material " + std::to_string(id) + " is used by no part (not converted)");
+    for (const auto& [id, e] : eos_)
+      if (!used_eos_.count(id)) refuse(e.where, "equation of state " + std::to_string(id) + " is used by no *MAT_JOHNSON_COOK part (not converted)");
     y << "materials:\n" << mats.str() << "sections:\n";
     for (const auto& [name, text] : emitted_sections_) y << "  " << name << ": " << text << "\n";
     y << "parts:\n" << parts.str();
@@ -1206,6 +1364,8 @@ class Converter {
   double endtim_ = 0, dtmin_ = 0, tssfac_ = 0.9, frame_dt_ = 0, history_dt_ = 0;
   long endcyc_ = 0;
   std::map<long, Material> materials_;
+  std::map<long, Eos> eos_;
+  std::set<long> used_eos_;
   std::map<long, std::vector<long>> node_sets_, part_sets_;
   std::map<long, const Card*> node_set_card_, segment_sets_;
   std::map<long, Curve> curves_;

@@ -41,7 +41,51 @@ void set_isotropic(Material& m, double RO, double E, double PR) {
   m.bulk_modulus = E / (3 * (1 - 2 * PR));
 }
 
+material::EosParams eos_params(const config::EosSpec& e, double rho0) {
+  material::EosParams q;
+  q.kind = e.card == "EOS_GRUNEISEN" ? material::EosParams::Kind::Gruneisen : material::EosParams::Kind::LinearPolynomial;
+  q.C0 = e.C0, q.C1 = e.C1, q.C2 = e.C2, q.C3 = e.C3, q.C4 = e.C4, q.C5 = e.C5, q.C6 = e.C6;
+  q.C = e.C, q.S1 = e.S1, q.S2 = e.S2, q.S3 = e.S3, q.GAMAO = e.GAMAO, q.A = e.A;
+  q.E0 = e.E0;
+  q.rho0 = rho0;
+  return q;
+}
+
+// *MAT_015 / *MAT_098: density, wave and bulk moduli from G and the reference bulk modulus (the
+// EOS's at mu = 0, or E / (3 (1 - 2 PR))). The step uses this reference stiffness: an EOS that
+// stiffens under compression (Gruneisen: about (1 + 2 S1 mu) rho0 C^2) needs TSSFAC to cover it.
+void set_johnson_cook(Material& m, const material::JohnsonCookParams& p) {
+  m.kind = MaterialKind::JohnsonCook;
+  m.johnson_cook = p;
+  m.density = p.rho0;
+  m.bulk_modulus = p.eos.kind != material::EosParams::Kind::None ? material::eos_reference_bulk_modulus(p.eos) : p.bulk;
+  m.wave_modulus = m.bulk_modulus + 4 * p.shear / 3;
+}
+
 }  // namespace
+
+material::JohnsonCookParams johnson_cook_params(const config::MatJohnsonCook& c) {
+  material::JohnsonCookParams p;
+  p.rho0 = c.RO;
+  p.shear = c.G;
+  p.bulk = c.eos ? 0.0 : c.E / (3 * (1 - 2 * c.PR));
+  p.A = c.A, p.B = c.B, p.N = c.N, p.C = c.C, p.M = c.M, p.TM = c.TM, p.TR = c.TR, p.EPSO = c.EPSO, p.CP = c.CP;
+  p.TQC = c.TQC, p.VP = c.VP, p.PC = c.PC, p.SPALL = c.SPALL;
+  p.D1 = c.D1, p.D2 = c.D2, p.D3 = c.D3, p.D4 = c.D4, p.D5 = c.D5, p.EFMIN = c.EFMIN, p.EROD = c.EROD;
+  if (c.eos) p.eos = eos_params(*c.eos, c.RO);
+  return p;
+}
+
+material::JohnsonCookParams simplified_johnson_cook_params(const config::MatSimplifiedJohnsonCook& c) {
+  material::JohnsonCookParams p;
+  p.simplified = true;
+  p.rho0 = c.RO;
+  p.shear = c.E / (2 * (1 + c.PR));
+  p.bulk = c.E / (3 * (1 - 2 * c.PR));
+  p.A = c.A, p.B = c.B, p.N = c.N, p.C = c.C, p.EPSO = c.EPSO, p.VP = c.VP;
+  p.PSFAIL = c.PSFAIL, p.SIGMAX = c.SIGMAX, p.SIGSAT = c.SIGSAT;
+  return p;
+}
 
 material::MaterialAxes material_axes_of(const config::MaterialAxes& a) { return {a.AOPT, a.A, a.D, a.V, a.BETA}; }
 
@@ -87,6 +131,10 @@ Material make_material(const config::MaterialSpec& spec) {
     m.plastic = material::piecewise_linear(pl->E, pl->PR, pl->SIGY, pl->ETAN, pl->C, pl->P, pl->FAIL, pl->LCSS_strain,
                                            pl->LCSS_stress);
     set_isotropic(m, pl->RO, pl->E, pl->PR);
+  } else if (const auto* jc = std::get_if<config::MatJohnsonCook>(&spec.params)) {
+    set_johnson_cook(m, johnson_cook_params(*jc));
+  } else if (const auto* sjc = std::get_if<config::MatSimplifiedJohnsonCook>(&spec.params)) {
+    set_johnson_cook(m, simplified_johnson_cook_params(*sjc));
   } else if (const auto* cd = std::get_if<config::MatCompositeDamage>(&spec.params)) {
     m.kind = MaterialKind::CompositeDamage;
     m.density = cd->RO;

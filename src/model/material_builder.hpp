@@ -7,6 +7,7 @@
 #include "config/scene.hpp"
 #include "material/composite_damage.hpp"
 #include "material/elastic.hpp"
+#include "material/johnson_cook.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact::model {
@@ -14,6 +15,10 @@ namespace plyimpact::model {
 Material make_material(const config::MaterialSpec& spec);
 
 material::MaterialAxes material_axes_of(const config::MaterialAxes& axes);
+
+// *MAT_015 (with its EOS) and *MAT_098 constants from cards the reader accepted.
+material::JohnsonCookParams johnson_cook_params(const config::MatJohnsonCook& card);
+material::JohnsonCookParams simplified_johnson_cook_params(const config::MatSimplifiedJohnsonCook& card);
 
 // Stiffness of a *MAT_002 card in its material axes. Throws InputError (naming `where`) when the
 // compliance is not positive definite, with the offending combination and a hint about the PRBA

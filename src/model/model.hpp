@@ -13,6 +13,7 @@
 #include "core/types.hpp"
 #include "material/composite_damage.hpp"
 #include "material/elastic.hpp"
+#include "material/johnson_cook.hpp"
 #include "material/plasticity.hpp"
 
 namespace plyimpact::mesh {
@@ -27,6 +28,7 @@ enum class MaterialKind {
   Rigid,               // *MAT_020: no stress; the part moves as one rigid body (solver/rigid_body)
   Plastic,             // *MAT_003 / *MAT_024: hypoelastic J2 plasticity (material/plasticity)
   CompositeDamage,     // *MAT_054 / *MAT_055: incremental, in current material axes (material/composite_damage)
+  JohnsonCook,         // *MAT_015 / *MAT_098: hypoelastic J2 Johnson-Cook, EOS pressure (material/johnson_cook)
 };
 
 struct Material {
@@ -43,11 +45,18 @@ struct Material {
   material::MaterialAxes axes;         // MAT_002, MAT_054
   material::PlasticityParams plastic;  // MAT_003, MAT_024
   material::CompositeDamageParams composite;  // MAT_054/055
+  material::JohnsonCookParams johnson_cook;   // MAT_015/098
   // History values per integration point (plastic strain, back stress; damage flags, ...).
   int history_size() const {
     return kind == MaterialKind::Plastic           ? material::kPlasticityHistory
            : kind == MaterialKind::CompositeDamage ? material::kCompositeDamageHistory
+           : kind == MaterialKind::JohnsonCook     ? material::kJohnsonCookHistory
                                                    : 0;
+  }
+  // Elements of this material can be deleted by a failure criterion of the material.
+  bool can_fail() const {
+    return kind == MaterialKind::CompositeDamage || (kind == MaterialKind::Plastic && plastic.failure_strain > 0) ||
+           (kind == MaterialKind::JohnsonCook && johnson_cook.can_fail());
   }
   bool has_axes() const { return kind == MaterialKind::OrthotropicElastic || kind == MaterialKind::CompositeDamage; }
 };

@@ -36,7 +36,7 @@ std::vector<Subsystem> subsystems(const Model& model) {
   // delamination: described by the interface contributor (interface/interface_tiebreaks.hpp).
   std::string eroding;
   for (const auto& m : model.materials)
-    if (m.kind == MaterialKind::CompositeDamage || (m.kind == MaterialKind::Plastic && m.plastic.failure_strain > 0))
+    if (m.can_fail())
       eroding += (eroding.empty() ? "" : ", ") + m.name + " (" + m.card + ")";
   if (model.control.erode_tsmin > 0) eroding += std::string(eroding.empty() ? "" : ", ") + "time step below erode_tsmin";
   list.push_back({"erosion", !eroding.empty(),

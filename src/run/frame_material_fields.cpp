@@ -5,6 +5,7 @@
 
 #include "material/composite_damage.hpp"
 #include "material/composite_damage_output.hpp"
+#include "material/johnson_cook.hpp"
 #include "material/plasticity.hpp"
 
 namespace plyimpact::run {
@@ -14,13 +15,16 @@ using namespace solver;  // the frame reads the solver's state types throughout
 void add_material_fields(const Solver& solver, output::Frame& frame) {
   const model::Model& model = solver.model();
   const State& state = solver.state();
-  bool any_plastic = false, any_damage = false;
+  bool any_plastic = false, any_damage = false, any_thermal = false;
   for (const auto& blk : model.blocks) {
-    any_plastic = any_plastic || model.materials[blk.material].kind == model::MaterialKind::Plastic;
+    const auto& mat = model.materials[blk.material];
+    any_plastic = any_plastic || mat.kind == model::MaterialKind::Plastic || mat.kind == model::MaterialKind::JohnsonCook;
+    any_thermal = any_thermal || (mat.kind == model::MaterialKind::JohnsonCook && mat.johnson_cook.thermal());
     any_damage = any_damage || model.materials[blk.material].kind == model::MaterialKind::CompositeDamage;
   }
   output::IntField alive{"alive", {}};
   output::Field plastic{"plastic_strain", 1, {}, {}};
+  output::Field temperature{"temperature", 1, {}, {}};  // K, *MAT_015 with CP (NaN elsewhere)
   const auto& names = material::composite_damage_output_names();
   std::vector<output::Field> damage;
   if (any_damage)
@@ -40,7 +44,20 @@ void add_material_fields(const Solver& solver, output::Frame& frame) {
         double ep = 0;
         if (kind == model::MaterialKind::Plastic)
           for (std::size_t g = 0; g < points; ++g) ep += st.history[(e * points + g) * material::kPlasticityHistory];
+        if (kind == model::MaterialKind::JohnsonCook)
+          for (std::size_t g = 0; g < points; ++g) ep += st.history[(e * points + g) * material::kJohnsonCookHistory];
         plastic.values.push_back(ep / double(points));
+      }
+      if (any_thermal) {  // mean over the points, like the plastic strain
+        const auto& mat = model.materials[blk.material];
+        double T = nan;
+        if (kind == model::MaterialKind::JohnsonCook && mat.johnson_cook.thermal()) {
+          T = 0;
+          for (std::size_t g = 0; g < points; ++g)
+            T += st.history[(e * points + g) * material::kJohnsonCookHistory + material::jc_history::kTemperatureRise];
+          T = mat.johnson_cook.TR + T / double(points);
+        }
+        temperature.values.push_back(T);
       }
       if (any_damage) {
         double values[material::kCompositeDamageOutputs];
@@ -64,6 +81,7 @@ void add_material_fields(const Solver& solver, output::Frame& frame) {
   }
   frame.cell_int_fields.push_back(std::move(alive));
   if (any_plastic) frame.cell_fields.push_back(std::move(plastic));
+  if (any_thermal) frame.cell_fields.push_back(std::move(temperature));
   for (auto& f : damage) frame.cell_fields.push_back(std::move(f));
 }
 

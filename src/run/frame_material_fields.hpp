@@ -1,5 +1,6 @@
 // Cell fields of the material state for the output frame: `alive` (0 once an element is eroded;
-// apply ParaView's Threshold on it to hide eroded elements), `plastic_strain` (*MAT_003/024) and
+// apply ParaView's Threshold on it to hide eroded elements), `plastic_strain` (*MAT_003/024/015/098),
+// `temperature` (K, *MAT_015 with adiabatic heating; NaN in other materials) and
 // the *MAT_054 damage fields (mode flags, criterion values, reduced strengths, erosion cause).
 // Cells of other materials get 0 plastic strain and NaN damage fields (shown as "no value").
 #pragma once

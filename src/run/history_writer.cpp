@@ -38,8 +38,7 @@ std::vector<std::string> history_columns(const model::Model& model, const solver
 bool can_erode(const model::Model& model) {
   if (model.control.erode_tsmin > 0) return true;
   for (const auto& m : model.materials)
-    if (m.kind == model::MaterialKind::CompositeDamage ||
-        (m.kind == model::MaterialKind::Plastic && m.plastic.failure_strain > 0))
+    if (m.can_fail())
       return true;
   return false;
 }

@@ -16,7 +16,7 @@ namespace plyimpact::solver {
 
 // Why an element was eroded (history.csv and summary.json count them per part and cause).
 enum class ErosionCause : int {
-  PlasticStrain = 1,  // MAT_003 FS / MAT_024 FAIL
+  PlasticStrain = 1,  // MAT_003 FS / MAT_024 FAIL / MAT_015 damage or spall / MAT_098 PSFAIL
   TimeStep = 2,       // control.erode_tsmin: the element step fell below the limit
   CompositeBase = 10, // MAT_054: 10 + material::CompositeDamageCause
 };

@@ -14,6 +14,7 @@
 
 #include "material/composite_damage_lanes.hpp"
 #include "material/isotropic_elastic_lanes.hpp"
+#include "material/johnson_cook_lanes.hpp"
 #include "material/orthotropic_elastic_lanes.hpp"
 #include "material/plasticity_lanes.hpp"
 #include "model/model.hpp"
@@ -36,6 +37,8 @@ void with_material(const model::Model& model, const model::ElementBlock& blk, Bl
     case model::MaterialKind::CompositeDamage:
       return f(material::CompositeDamageLanes(mat.composite, st.history.data(), st.axes.data(), st.initial_dt.data(),
                                               int(ErosionCause::CompositeBase)));
+    case model::MaterialKind::JohnsonCook:
+      return f(material::JohnsonCookLanes(mat.johnson_cook, st.history.data(), int(ErosionCause::PlasticStrain)));
     default:
       return f(material::IsotropicElasticLanes(mat.iso));
   }
