@@ -218,6 +218,7 @@ struct Model {
   std::vector<RigidWall> rigid_walls;
   std::vector<Contact> contacts;
   Vec3 gravity{0, 0, 0};                // m/s^2
+  std::optional<config::CouponSpec> coupon;  // fracture-coupon measurements (run/coupon_probe)
   // The rigid impactor's surface, when a contact or rigid body uses it: its nodes are appended to
   // the model's nodes (mass = impactor mass / number of surface nodes, for the contact stiffness)
   // and these quads index them. impactor_bulk_modulus: from its material, 0 if none (then its

@@ -13,13 +13,24 @@
 
 namespace plyimpact::run {
 
+// Columns of a run observer that measures something of its own (the coupon probe), appended
+// after the solver's columns.
+class HistoryColumns {
+ public:
+  virtual ~HistoryColumns() = default;
+  virtual std::vector<std::string> columns() const = 0;
+  // Appends one value per column, for the solver's current state.
+  virtual void values(const solver::Solver& solver, std::vector<double>& row) const = 0;
+};
+
 // Erosion columns only when something can erode (a material with failure, or erode_tsmin).
 bool can_erode(const model::Model& model);
 
 class HistoryWriter : public RunObserver {
  public:
   // Rows every `interval` s; the file is rewritten every `flush_interval` s and on the last cycle.
-  HistoryWriter(const model::Model& model, std::filesystem::path file, double interval, double flush_interval);
+  HistoryWriter(const model::Model& model, std::filesystem::path file, double interval, double flush_interval,
+                std::vector<const HistoryColumns*> extra = {});
 
   void start(const solver::Solver& solver) override;
   void after_cycle(const solver::Solver& solver) override;
@@ -30,6 +41,7 @@ class HistoryWriter : public RunObserver {
 
   const model::Model& model_;
   std::filesystem::path file_;
+  std::vector<const HistoryColumns*> extra_;
   double t_end_;
   std::optional<output::HistoryTable> table_;  // columns known once the solver is built
   std::vector<double> row_;
