@@ -29,6 +29,7 @@
 #include <numeric>
 
 #include "cohesive/law_parameters.hpp"
+#include "core/error.hpp"
 #include "dcb_scene_ci.hpp"
 #include "fracture/dcb_record.hpp"
 #include "fracture/dcb_reduction.hpp"
@@ -84,6 +85,46 @@ TEST(DcbScene, D5528ReductionOfTheSimulatedHistoryRecoversERATEN) {
   EXPECT_NEAR(g_mbt / kGIc, 1.0, 0.05);
   EXPECT_NEAR(g_cc / kGIc, 1.0, 0.05);
   EXPECT_NEAR(g_mcc / kGIc, 1.0, 0.05);
+}
+
+// The loading ramp: v = V (1 - cos(pi t / t_r)) / 2 sampled at 64 intervals; between samples the
+// linear interpolation deviates from the cosine by at most pi^2 / (16 * 64^2) V = 0.015 % of V.
+TEST(CouponLoading, SmoothRampFollowsTheCosineAndHolds) {
+  const config::CurveSpec c = config::smooth_ramp_curve(2.0, 1e-3);
+  ASSERT_EQ(c.t.size(), 65u);
+  EXPECT_EQ(c.y.front(), 0.0);
+  EXPECT_DOUBLE_EQ(c.y.back(), 2.0);
+  EXPECT_DOUBLE_EQ(c.t.back(), 1e-3);
+  for (std::size_t i = 0; i + 1 < c.t.size(); ++i) {
+    const double tm = 0.5 * (c.t[i] + c.t[i + 1]);
+    const double exact = 1.0 * (1 - std::cos(3.141592653589793 * tm / 1e-3));
+    EXPECT_NEAR(0.5 * (c.y[i] + c.y[i + 1]), exact, 2.0 * 9.8696 / (16 * 64 * 64) * 1.0001);
+  }
+  const config::CurveSpec step = config::smooth_ramp_curve(2.0, 0.0);
+  EXPECT_EQ(step.t, std::vector<double>{0.0});
+}
+
+// The coupon section names file:line:col, the key and what is allowed.
+TEST(CouponSection, BadInputIsRefusedWithItsLocation) {
+  const std::string path = std::string(PLYIMPACT_SOURCE_DIR) + "/configs/dcb_t800s_m21.yaml";
+  const auto refused = [&](const std::string& set, const std::string& expected, const std::string& key = "coupon") {
+    try {
+      (void)config::load_scene(path, {config::parse_set_argument(set)});
+      ADD_FAILURE() << set << ": accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      std::printf("  %s\n", e.what());
+    }
+  };
+  refused("coupon.interface=2", "interface 2 has no tiebreak law");
+  refused("coupon.load=block_nowhere", "block_nowhere");
+  refused("coupon.type=SLB", "DCB, ENF, MMB");
+  refused("coupon.axis=x", "no prescribed velocity along x");
+  refused("coupon.opening={upper: block_bottom}", "neither opening.upper nor opening.lower");
+  refused("coupon.crack_origin=200", "crack_origin");
+  refused("boundary_conditions[0].velocity={dofs: [z], curve: [[0, 0], [1, 1]], ramp: 1}", "ramp",
+          "boundary_conditions[0].velocity");
 }
 
 }  // namespace
