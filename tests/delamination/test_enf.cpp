@@ -1,6 +1,6 @@
 // End-notched flexure (mode II): the shipped scene configs/enf_t800s_m21.yaml at CI size (a 2 mm
 // wide strip; span, thickness and a0 as shipped: L = 50 mm, h = 1.5 mm per arm, a0 = 30 mm from the
-// left support) through the whole chain at three meshes (segments 2.5, 1.25, 0.625 mm: the node
+// left support) through the whole chain at three meshes (segments 5, 2.5, 1.25 mm: the node
 // lines of the supports and the load exist on all three), with the seed's full strengths.
 //
 // Independent answers, beam theory for three-point bending of the two arms (each of thickness h,
@@ -14,15 +14,15 @@
 //   P_c = 4 b / (3 (a + Delta_II)) sqrt(E11 h^3 G_IIc); with a0 / L = 0.6 < 0.7 the growth is
 //   unstable, so P_c is the peak load.
 // Tolerances:
-//   - compliance within 10 % at every mesh (fit of deflection against load over 0.3 .. 0.8 P_c).
-//     Beam theory leaves out the local compliance at the load and support lines and the arms'
-//     transverse normal strain, and the 2-element arms carry the shear as constant per element;
-//     measured about +7 %, and that it does not move with the in-plane mesh shows it is the
-//     through-thickness model, not the interface;
+//   - compliance within 5 % at every mesh (fit of deflection against load over 0.3 .. 0.8 P_c, the
+//     load averaged over 0.1 ms): beam theory with these corrections agrees with 2-D elasticity to
+//     ~2 % (Wang & Williams); it leaves out the local compliance at the load and support lines,
+//     a fraction of a per cent here;
 //   - peak load within 15 % of P_c at the finest mesh: in mode II the process zone of a slender
 //     beam is long, of order sqrt(E11 h G_IIc) / SFLS = 9 mm (Massabo & Cox's scaling for slender
 //     bodies), a third of a0, so the cohesive peak lies below the LEFM value (the zone relieves the
-//     tip) by roughly the ratio of half the zone to a + Delta_II; the coarse meshes are printed.
+//     tip) by roughly the ratio of half the zone to a + Delta_II (14 %); the coarser meshes are printed
+//     (the segments 5 mm to 1.25 mm put 2 to 7 segments in that zone).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -101,7 +101,7 @@ TEST(ENF, ComplianceAndCriticalLoadAgainstBeamTheoryAtThreeMeshes) {
   std::printf("ENF (T800S/M21, L %.0f mm, a0 %.0f mm, b %.0f mm, 2h %.0f mm), Delta_II %.2f mm\n", L * 1e3, a0 * 1e3,
               b * 1e3, 2 * h * 1e3, delta_ii() * 1e3);
   std::printf("  segment  elements  compliance error  peak / P_c - 1  wall\n");
-  for (double seg : {2.5, 1.25, 0.625}) {
+  for (double seg : {5.0, 2.5, 1.25}) {
     const EnfResult r = run_enf(seg);
     const double a_eff = a0 + seg * 1e-3 / 2;
     const double c_beam = (3 * std::pow(a_eff + delta_ii(), 3) + 2 * L * L * L) / (8 * E11 * b * h * h * h) +
@@ -109,8 +109,10 @@ TEST(ENF, ComplianceAndCriticalLoadAgainstBeamTheoryAtThreeMeshes) {
     const double p_c = 4 * b / (3 * (a_eff + delta_ii())) * std::sqrt(E11 * h * h * h * GIIc);
     std::printf("  %5.3f mm  %8ld  %+14.2f %%  %+13.2f %%  %5.1f s\n", seg, r.elements,
                 100 * (r.compliance / c_beam - 1), 100 * (r.peak / p_c - 1), r.wall);
-    EXPECT_NEAR(r.compliance / c_beam, 1.0, 0.10) << "segment " << seg << " mm";
-    if (seg < 1) EXPECT_NEAR(r.peak / p_c, 1.0, 0.15);
+    EXPECT_NEAR(r.compliance / c_beam, 1.0, 0.05) << "segment " << seg << " mm";
+    if (seg < 2) {
+      EXPECT_NEAR(r.peak / p_c, 1.0, 0.15);
+    }
   }
 }
 
