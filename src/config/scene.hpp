@@ -143,6 +143,32 @@ struct BoundaryConditionSpec {
   SourceLocation where;
 };
 
+// Velocity V reached from rest over `ramp` seconds along V (1 - cos(pi t / ramp)) / 2 (zero
+// acceleration at both ends, so a quasi-static coupon is not struck), then held: the curve samples
+// the ramp at `segments` intervals (the largest deviation from the cosine is pi^2 / (16 n^2) of V,
+// 0.02 % for the default 64). ramp = 0 gives the step {0: V}.
+CurveSpec smooth_ramp_curve(double velocity, double ramp, int segments = 64);
+
+// The measurements of a fracture coupon (DCB, ENF, MMB), written as history.csv columns `load`,
+// `opening` and `crack_length` (run/coupon_probe; docs/coupons.md):
+//   load         = the reaction of node set `load` along `axis`, signed positive when it opens the
+//                  specimen (pulls `upper` up or pushes `lower` down);
+//   opening      = mean displacement of `upper` minus that of `lower` along `axis` (a side left
+//                  empty is the fixed ground);
+//   crack_length = from the load line x = crack_origin along +x to the damage front of interface
+//                  `interface`: midway between the furthest row of separated pairs (damage 1,
+//                  pre-crack included) and the next row of pairs.
+struct CouponSpec {
+  enum class Type { DCB, ENF, MMB };
+  Type type = Type::DCB;
+  int interface = 0;           // 1-based interface number (between plies i and i + 1)
+  std::string load;            // node set with a prescribed velocity (a constrained set)
+  std::string upper, lower;    // node sets; at least one
+  int axis = 2;                // 0 = x, 1 = y, 2 = z
+  double crack_origin = 0;     // m, x of the load line
+  SourceLocation where;
+};
+
 struct InitialVelocitySpec {
   std::string part;      // either a part...
   std::string node_set;  // ...or a node set (exactly one is non-empty)
@@ -311,6 +337,7 @@ struct Scene {
   std::vector<RigidWallSpec> rigid_walls;
   std::vector<ContactSpec> contacts;
   Vec3 gravity{0, 0, 0};                 // m/s^2, body-force acceleration on every node (*LOAD_BODY)
+  std::optional<CouponSpec> coupon;      // `coupon:` section: fracture-coupon history columns
 };
 
 }  // namespace plyimpact::config

@@ -13,6 +13,7 @@
 #include <map>
 #include <sstream>
 
+#include "config/coupon_reader.hpp"
 #include "config/laminate_reader.hpp"
 #include "config/yaml_reader.hpp"
 #include "core/error.hpp"
@@ -431,7 +432,7 @@ CurveSpec read_curve(const Reader& r) {
 }
 
 std::vector<BoundaryConditionSpec> read_bcs(const Reader& r, const Scene& scene) {
-  r.require_list("a list of {node_set, fix: [dofs]} or {node_set, velocity: {dofs, value | curve}}", false);
+  r.require_list("a list of {node_set, fix: [dofs]} or {node_set, velocity: {dofs, value [, ramp] | curve}}", false);
   const auto sets = names_of(scene.node_sets);
   std::vector<BoundaryConditionSpec> out;
   for (const Reader& b : r.items()) {
@@ -445,12 +446,15 @@ std::vector<BoundaryConditionSpec> read_bcs(const Reader& r, const Scene& scene)
       spec.dofs = read_dofs(b.at("fix", ""));
     } else {
       const Reader v = b.at("velocity", "");
-      v.require_map("{dofs: [x, y, z], value: <velocity>} or {dofs: [...], curve: [[t, v], ...]}");
-      v.allow_keys({"dofs", "value", "curve"});
+      v.require_map("{dofs: [x, y, z], value: <velocity>, optional ramp: <time>} or {dofs: [...], curve: [[t, v], ...]}");
+      v.allow_keys({"dofs", "value", "ramp", "curve"});
       spec.kind = BoundaryConditionSpec::Kind::Velocity;
       spec.dofs = read_dofs(v.at("dofs", "a list of dofs from x, y, z"));
       if (v.exactly_one({"value", "curve"}) == "value")
-        spec.curve = CurveSpec{{0.0}, {v.quantity("value", u::velocity)}};
+        spec.curve = smooth_ramp_curve(v.quantity("value", u::velocity),
+                                       v.quantity_or("ramp", u::time, 0.0, Limits::non_negative("ramp time")));
+      else if (const auto ramp = v.find("ramp"))
+        ramp->fail("a ramp applies to a constant value", "ramp together with value (the curve gives its own shape)");
       else
         spec.curve = read_curve(v.at("curve", ""));
     }
@@ -720,7 +724,7 @@ std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
 
 Scene read_scene(const Reader& root, detail::Context& ctx) {
   const char* top = "a mapping with units, control, materials, sections, parts, mesh and optional output, "
-                    "node_sets, boundary_conditions, initial_velocity, rigid_bodies, rigid_walls, contacts, gravity";
+                    "node_sets, boundary_conditions, initial_velocity, rigid_bodies, rigid_walls, contacts, gravity, coupon";
   if (!root.node().IsDefined() || root.node().IsNull()) root.fail("the scene is empty", top);
   root.require_map(top);
   if (const auto i = root.find("interfaces"))
@@ -729,7 +733,7 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
             "laminate.interfaces: {select: ..., model: tiebreak, ...} in a scene with a laminate section");
   root.allow_keys({"units", "control", "output", "materials", "sections", "parts", "mesh", "laminate", "impactor",
                    "node_sets", "boundary_conditions", "initial_velocity", "rigid_bodies", "rigid_walls", "contacts",
-                   "gravity"});
+                   "gravity", "coupon"});
   Scene scene;
   const Reader units_node = root.at("units", u::allowed_unit_systems());
   units_node.require_scalar(u::allowed_unit_systems());
@@ -777,6 +781,7 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
   if (const auto rw = root.find("rigid_walls")) scene.rigid_walls = read_rigid_walls(*rw, scene);
   if (const auto c = root.find("contacts")) scene.contacts = read_contacts(*c, scene);
   if (const auto g = root.find("gravity")) scene.gravity = g->as_vec3(u::acceleration);
+  if (const auto c = root.find("coupon")) scene.coupon = detail::read_coupon(*c, scene);
   return scene;
 }
 

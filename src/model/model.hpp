@@ -233,6 +233,7 @@ struct Model {
   // Tiebreak contacts (spec.tiebreak set): side a the slave surface, b the master (interface/surface_tiebreaks).
   std::vector<Contact> tiebreak_contacts;
   Vec3 gravity{0, 0, 0};                // m/s^2
+  std::optional<config::CouponSpec> coupon;  // fracture-coupon measurements (run/coupon_probe)
   // The rigid impactor's surface, when a contact or rigid body uses it: its nodes are appended to
   // the model's nodes (mass = impactor mass / number of surface nodes, for the contact stiffness)
   // and these quads index them. impactor_bulk_modulus: from its material, 0 if none (then its

@@ -70,6 +70,7 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
   Model model;
   model.name = scene.name;
   model.control = scene.control;
+  model.coupon = scene.coupon;
   model.output = scene.output;
   model.X = mesh.coords;
   const std::size_t num_nodes = mesh.num_nodes();

@@ -11,7 +11,8 @@ namespace {
 // Columns: time and step, the integrator's energies, total and ratio, the controlling element, the
 // reactions, then each force contributor's energies and own columns, then erosion. Energies come
 // from the balance's named list (solver/energies.hpp), so a new energy is named in one place.
-std::vector<std::string> history_columns(const model::Model& model, const solver::Solver* solver) {
+std::vector<std::string> history_columns(const model::Model& model, const solver::Solver* solver,
+                                         const std::vector<const HistoryColumns*>& extra) {
   const solver::Energies own;
   std::vector<std::string> cols = {"time", "dt"};
   for (const auto& t : own.terms) cols.push_back(t.column);
@@ -30,6 +31,8 @@ std::vector<std::string> history_columns(const model::Model& model, const solver
     cols.push_back("eroded_elements");
     cols.push_back("eroded_energy");
   }
+  for (const HistoryColumns* x : extra)
+    for (auto& col : x->columns()) cols.push_back(std::move(col));
   return cols;
 }
 
@@ -43,8 +46,9 @@ bool can_erode(const model::Model& model) {
   return false;
 }
 
-HistoryWriter::HistoryWriter(const model::Model& model, std::filesystem::path file, double interval)
-    : model_(model), file_(std::move(file)), rows_(interval) {}
+HistoryWriter::HistoryWriter(const model::Model& model, std::filesystem::path file, double interval,
+                             std::vector<const HistoryColumns*> extra)
+    : model_(model), file_(std::move(file)), extra_(std::move(extra)), rows_(interval) {}
 
 void HistoryWriter::add_row(const solver::Solver& solver) {
   const solver::State& s = solver.state();
@@ -60,6 +64,7 @@ void HistoryWriter::add_row(const solver::Solver& solver) {
     solver.contributors()[c]->history_values(row_);
   }
   if (can_erode(solver.model())) row_.insert(row_.end(), {double(s.eroded_elements), s.eroded_energy});
+  for (const HistoryColumns* x : extra_) x->values(solver, row_);
   table_->add_row(row_);
 }
 
@@ -78,13 +83,13 @@ void HistoryWriter::append_pending() {
 }
 
 void HistoryWriter::start(const solver::Solver& solver) {
-  table_.emplace(history_columns(model_, &solver));
+  table_.emplace(history_columns(model_, &solver, extra_));
   add_row(solver);
   rewrite(true);
 }
 
 void HistoryWriter::resume(const solver::Solver& solver) {
-  table_.emplace(history_columns(model_, &solver));
+  table_.emplace(history_columns(model_, &solver, extra_));
   const std::size_t ncol = table_->columns().size();
   if (stored_.size() % ncol != 0)
     throw InputError(msg() << "the restart dump's history has rows of another width than this scene's " << ncol
@@ -104,7 +109,7 @@ void HistoryWriter::after_cycle(const solver::Solver& solver) {
 }
 
 void HistoryWriter::stop(const solver::Solver* solver, RunReport& report) {
-  if (!table_) table_.emplace(history_columns(model_, solver));  // the solver could not be built
+  if (!table_) table_.emplace(history_columns(model_, solver, extra_));  // the solver could not be built
   rewrite(false);
   report.history = file_;
 }

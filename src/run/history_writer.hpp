@@ -18,6 +18,16 @@
 
 namespace plyimpact::run {
 
+// Columns of a run observer that measures something of its own (the coupon probe), appended
+// after the solver's columns.
+class HistoryColumns {
+ public:
+  virtual ~HistoryColumns() = default;
+  virtual std::vector<std::string> columns() const = 0;
+  // Appends one value per column, for the solver's current state.
+  virtual void values(const solver::Solver& solver, std::vector<double>& row) const = 0;
+};
+
 // Erosion columns only when something can erode (a material with failure, or erode_tsmin).
 bool can_erode(const model::Model& model);
 
@@ -27,8 +37,9 @@ class HistoryWriter : public RunObserver {
   // Longest wall time a computed row waits before it is appended to the file.
   static constexpr std::chrono::milliseconds kAppendDelay{1000};
 
-  // Rows every `interval` s.
-  HistoryWriter(const model::Model& model, std::filesystem::path file, double interval);
+  // Rows every `interval` s; `extra` sources add their columns after the solver's (coupon probe).
+  HistoryWriter(const model::Model& model, std::filesystem::path file, double interval,
+                std::vector<const HistoryColumns*> extra = {});
 
   void start(const solver::Solver& solver) override;
   void resume(const solver::Solver& solver) override;
@@ -44,6 +55,7 @@ class HistoryWriter : public RunObserver {
 
   const model::Model& model_;
   std::filesystem::path file_;
+  std::vector<const HistoryColumns*> extra_;
   std::optional<output::HistoryTable> table_;  // columns known once the solver is built
   std::vector<double> row_;
   std::vector<double> stored_;  // the table's values passing through visit_state

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "run/coupon_probe.hpp"
 #include "run/frame_writer.hpp"
 #include "run/history_writer.hpp"
 #include "run/output_folder.hpp"
@@ -100,7 +101,10 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   const double frame_interval = model.output.interval > 0 ? model.output.interval : t_end / 20;
   const double history_interval = model.output.history_interval > 0 ? model.output.history_interval : t_end / 1000;
 
-  HistoryWriter history(model, options.output_dir / "history.csv", history_interval);
+  std::optional<CouponProbe> coupon;
+  if (model.coupon) coupon.emplace(model);
+  HistoryWriter history(model, options.output_dir / "history.csv", history_interval,
+                        coupon ? std::vector<const HistoryColumns*>{&*coupon} : std::vector<const HistoryColumns*>{});
   FrameWriter frames(model, options.output_dir, frame_interval);
   InterfaceFrameWriter interfaces(model, options.output_dir, frame_interval);
   HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
