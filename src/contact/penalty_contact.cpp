@@ -96,8 +96,11 @@ InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<dou
 void PenaltyContact::check_release(std::size_t i, long last, const double* x, double time) {
   if (last < 0) return;  // its segment did not survive an eroding rebuild: nothing to compare with
   const Index node = set_.node_id(i);
-  const Projection pr = project_to_bilinear(&x[3 * std::size_t(node)], search_.record(set_, std::size_t(last), x),
-                                            search_.options().MAXPAR);
+  // Behind the face and over it, with a margin of four times the MAXPAR tolerance: a node pressed
+  // into a corner of the surface (an impactor's pole over a node of the plate) is released when
+  // its projection leaves every segment's MAXPAR range, still deep behind them.
+  const double margin = 1 + 4 * std::max(search_.options().MAXPAR - 1, 0.0);
+  const Projection pr = project_to_bilinear(&x[3 * std::size_t(node)], search_.record(set_, std::size_t(last), x), margin);
   const double g = pr.gap - springs_.offset_on(i, last);
   if (!pr.inside || !(g < 0)) return;  // left the face (lifted off or slid past its edge)
   Penetrations& p = penetrations_;
