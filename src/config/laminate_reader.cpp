@@ -465,7 +465,10 @@ void read_impactor(const Reader& r, Scene& scene) {
   }
   imp.rigid = !r.has("rigid") || r.at("rigid", "").as_choice({"true", "false"}) == "true";
   imp.gap = r.quantity_or("gap", u::length, 0.0, Limits::non_negative("gap"));
-  imp.element_size = r.quantity_or("element_size", u::length, imp.diameter / 8, Limits::positive("element size"));
+  // At most the radius: the mesher puts at least two elements on a quarter circumference, so a
+  // larger size would be silently replaced by a mesh the user did not ask for.
+  imp.element_size = r.quantity_or("element_size", u::length, imp.diameter / 8,
+                                   Limits::interval(0, true, radius, false, "impactor element size (at most the radius)"));
   imp.x = scene.laminate ? scene.laminate->impact_x : 0;
   imp.y = scene.laminate ? scene.laminate->impact_y : 0;
   if (const auto p = r.find("position")) {

@@ -93,7 +93,25 @@ InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<dou
   if (s == h.exposure_segment[i]) h.exposure_offset[i] = std::max(h.exposure_offset[i], pr.gap - h.offset[i]);  // relaxes
 }
 
-void PenaltyContact::apply(const double* x, const double* v, double* f, double dt) {
+void PenaltyContact::check_release(std::size_t i, long last, const double* x, double time) {
+  if (last < 0) return;  // its segment did not survive an eroding rebuild: nothing to compare with
+  const Index node = set_.node_id(i);
+  // Behind the face and over it, with a margin of four times the MAXPAR tolerance: a node pressed
+  // into a corner of the surface (an impactor's pole over a node of the plate) is released when
+  // its projection leaves every segment's MAXPAR range, still deep behind them.
+  const double margin = 1 + 4 * std::max(search_.options().MAXPAR - 1, 0.0);
+  const Projection pr = project_to_bilinear(&x[3 * std::size_t(node)], search_.record(set_, std::size_t(last), x), margin);
+  const double g = pr.gap - springs_.offset_on(i, last);
+  if (!pr.inside || !(g < 0)) return;  // left the face (lifted off or slid past its edge)
+  Penetrations& p = penetrations_;
+  const PenetrationEvent e{node, time, -g};
+  if (p.count == 0) p.first = e;
+  if (e.depth > p.deepest.depth) p.deepest = e;
+  p.last = e;
+  ++p.count;
+}
+
+void PenaltyContact::apply(const double* x, const double* v, double* f, double dt, double time) {
   const std::size_t N = set_.num_nodes(), U = set_.num_force_nodes();
   // One pass over the force nodes: the fastest (it bounds the relative motion in one step) and the
   // re-sort test.
@@ -105,7 +123,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   std::fill(fc_.begin(), fc_.end(), 0.0);
   forces_ = ContactForces{};
   const bool friction = law_.friction();
-  double friction_work = 0, spring_correction = 0;
+  double friction_work = 0, damping_work = 0;
   const double v_max = std::sqrt(v_max2);
   SpringHistory& h = springs_;
   for (std::size_t i = 0; i < N; ++i) {
@@ -117,8 +135,11 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     const long last = h.segment[i];
     h.segment[i] = s;
     h.engaged[i] = s >= 0;
-    if (s < 0) {  // released: a spring's remaining potential stays in the contact energy (lost)
-      if (!entering) h.release(i);  // (a node that was not in contact has all of this at zero already)
+    if (s < 0) {  // released: the spring and its potential end here
+      if (!entering) {  // (a node that was not in contact has all of this at zero already)
+        check_release(i, last, x, time);
+        h.release(i);
+      }
       continue;
     }
     update_exposure(i, s, last, pr);
@@ -155,27 +176,9 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       friction_work -= dot3(ft, vt) * dt;
       forces_.tangential += std::sqrt(dot3(ft, ft));
     }
-    // Energy of a spring that is new in this step (the node engages, switches segment or the
-    // stiffness changed). The trapezoid below books this node's old and new forces times the whole
-    // step's relative motion, -0.5 (F_old . v_rel + fn vn) dt, which is right only for a spring
-    // whose gap moved continuously from g_old to g. Otherwise:
-    //  - engaging: the node crossed the surface part of the way; the spring holds 0.5 k g^2 (the
-    //    difference grows as k (vn dt)^2 and with a stiff penalty exceeds the impact energy,
-    //    ContactStep test);
-    //  - switching: the new spring starts from g0 = g - vn dt (its gap before this step's motion),
-    //    potential P0 = 0.5 k g0^2, where the old one had P_old. Its energy is booked as
-    //    P - min(P0, P_old): a jump up (a node found deeper behind the new segment than the old
-    //    one had it) is energy the discrete model creates, booked here so that the contact energy
-    //    keeps its springs' potential and the jump shows in the energy ratio instead of as
-    //    negative contact energy; a jump down keeps the lost part in the contact energy like a
-    //    spring released while compressed.
-    if (entering || s != last || k != h.k[i]) {
-      const double g0 = g - vn * dt;
-      const double p_new = 0.5 * k * g * g, p_start = g0 < 0 ? 0.5 * k * g0 * g0 : 0.0;
-      const double p_old = entering ? 0.0 : 0.5 * h.k[i] * h.gap[i] * h.gap[i];
-      const double booked = -0.5 * (dot3(&h.fn[3 * i], vrel) + fn * vn) * dt;
-      spring_correction += booked - (p_new - std::min(p_start, p_old));
-    }
+    // Damping (VDC) dissipates -(f_n - f_spring) v_n dt: the normal force beyond the spring's k |g|
+    // against the normal relative velocity.
+    damping_work -= (fn + k * g) * vn * dt;
     h.gap[i] = g;
     h.k[i] = k;
     for (int d = 0; d < 3; ++d) h.fn[3 * i + d] = fn * n[d];
@@ -200,9 +203,9 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     rows_[std::size_t(ui)] += k * sum_b;
     for (int a = 0; a < 4; ++a) rows_[std::size_t(ql[a])] += k * pr.N[a] * sum_b;
   }
-  // Scatter, energy (trapezoid: the step moved the nodes by dt v) and side-A resultant.
+  // Scatter, side-A resultant and the work of the contact forces on the bodies (book_work).
   const std::vector<Index>& nodes = set_.force_nodes();
-  double work = 0, omega2 = 0;
+  double power_old = 0, power_new = 0, omega2 = 0;
   for (std::size_t u = 0; u < U; ++u) {
     omega2 = std::max(omega2, rows_[u] * set_.force_node_inv_mass(u));
     rows_[u] = 0;
@@ -210,16 +213,34 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     for (int d = 0; d < 3; ++d) {
       const double fu = fc_[3 * u + d];
       f[3 * node + d] += fu;
-      work += 0.5 * (fc_prev_[3 * u + d] + fu) * v[3 * node + d] * dt;
+      power_old += fc_prev_[3 * u + d] * v[3 * node + d];
+      power_new += fu * v[3 * node + d];
       if (set_.force_node_side_a(u)) forces_.resultant[d] += fu;
     }
   }
-  energy_ -= work + spring_correction;
+  book_work(power_old, power_new, dt);
   friction_energy_ += friction_work;
+  damping_energy_ += damping_work;
+  energy_ = forces_.potential + friction_energy_ + damping_energy_;
   dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
   h.exposed_pass = false;
   fc_prev_.swap(fc_);
   std::copy(fc_prev_.begin(), fc_prev_.end(), fc_.begin());  // fc_ keeps the last forces for output
+}
+
+void PenaltyContact::book_work(double power_old, double power_new, double dt) {
+  // The integrator applies the force f^p of the pass at t^p over dt_p = (dt^{p-1/2} + dt^{p+1/2}) / 2
+  // and evaluates the kinetic energy at t^p with v_p = (v^{p-1/2} + v^{p+1/2}) / 2, so the work that
+  // changes the bodies' kinetic energy as the balance measures it is dt_p f^p . v_p. Its first half,
+  // 0.5 dt_p f^p . v^{p-1/2}, is due at the pass itself, before dt^{p+1/2} is known: booked with
+  // dt^{p-1/2} and corrected at the next pass, which also books the second half with v^{p+1/2}.
+  // (A plain trapezoid 0.5 (f^p + f^{p+1}) . v^{p+1/2} dt^{p+1/2} weights a force with a step it was
+  // not applied over, which the combined contact step changes from pass to pass.)
+  const double dt_p = 0.5 * (work_dt_ + dt);
+  const double work = 0.5 * (dt_p - work_dt_) * work_power_ + 0.5 * dt_p * power_old + 0.5 * dt * power_new;
+  taken_ -= work;
+  work_power_ = power_new;
+  work_dt_ = dt;
 }
 
 void PenaltyContact::visit_state(StateVisitor& v) {
@@ -236,7 +257,12 @@ void PenaltyContact::visit_state(StateVisitor& v) {
   v.scalar("exposures", exposures_);
   v.scalar("energy", energy_);
   v.scalar("friction energy", friction_energy_);
+  v.scalar("damping energy", damping_energy_);
+  v.scalar("energy taken from the bodies", taken_);
+  v.scalar("power of the last pass", work_power_);
+  v.scalar("step of the last pass", work_dt_);
   v.scalar("pass forces", forces_);
+  v.scalar("penetrations", penetrations_);
   v.scalar("stiffness bounds", bounds_);
   v.scalar("spring stable step", dt_springs_);
 }

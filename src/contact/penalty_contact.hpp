@@ -10,12 +10,15 @@
 // and, here, what ties them together:
 //   force     : f_s = (k |g| + viscous) n + f_t on the node, -N_k f_s on the segment nodes, so
 //               linear momentum is conserved to round-off.
-//   energy    : contact energy = - work of the contact forces (trapezoid in time; a spring that
-//               engages, switches segment or changes stiffness in the step is booked at its
-//               potential 0.5 k g^2: a jump up is energy the discrete model created and shows in
-//               the energy ratio, a jump down or a release stays in the contact energy), so it is
-//               never below the potential of the active springs; the frictional part (work of
-//               the tangential forces against the slip) is reported separately.
+//   energy    : contact energy = potential of the springs active now (sum 0.5 k g^2) + what friction
+//               and damping (VDC) have dissipated; a spring released, switched or created in a step
+//               takes its potential with it, so after separation the contact energy is the
+//               dissipation alone, and energy the discrete contact created or lost (a node caught
+//               deep, a spring dropped while compressed) shows in the energy ratio instead of being
+//               kept in the contact energy. Beside it, the work of the contact forces on the bodies
+//               (weighted as the integrator applies them, book_work) gives the energy the contact
+//               took from the bodies; created() = energy() - taken() is the energy the discrete
+//               contact model created (> 0) or destroyed (< 0), for the run checks.
 //   stability : a priori step of the stiffest single spring (check, warning) and, every pass, the
 //               Gershgorin bound of the active springs (spring_stable_step), which the solver
 //               combines with the element step.
@@ -45,13 +48,26 @@ struct InitialPenetrations {
   bool moved = false;      // true: nodes moved onto the surface; false: kept as offset
 };
 
+// A node that passed through the surface: released while still behind the face of its last
+// segment (deeper than the release depth, or pushed through), as LS-DYNA reports the penetrations
+// it releases.
+struct PenetrationEvent {
+  Index node = -1;     // model node index (0-based)
+  double time = 0;     // s, of the pass that released it
+  double depth = 0;    // m, behind the face at release
+};
+struct Penetrations {
+  long count = 0;
+  PenetrationEvent first, deepest, last;
+};
+
 // Per-contact output of the last pass.
 struct ContactForces {
   Vec3 resultant{0, 0, 0};   // N, total contact force on side A (on the surface for single surface: 0)
   double normal = 0;         // N, sum of the normal force magnitudes of all contact points
   double tangential = 0;     // N, sum of the friction force magnitudes
   std::size_t active = 0;    // number of penetrating nodes
-  double potential = 0;      // J, sum of 0.5 k g^2 of the active springs (the contact energy is never below it)
+  double potential = 0;      // J, sum of 0.5 k g^2 of the active springs
 };
 
 class PenaltyContact {
@@ -65,8 +81,8 @@ class PenaltyContact {
   InitialPenetrations resolve_initial_penetrations(std::vector<double>& x);
 
   // Adds the contact forces at x^{n+1} (velocities v^{n+1/2}) to f. dt: Delta t^{n+1/2}, the step
-  // that led to x (0 for the initial evaluation).
-  void apply(const double* x, const double* v, double* f, double dt);
+  // that led to x (0 for the initial evaluation); time: t^{n+1} (for the penetration records).
+  void apply(const double* x, const double* v, double* f, double dt, double time = 0);
 
   // After element deletion: rebuild the surfaces from the active elements at x (eroding contact).
   void rebuild(const AliveMask& alive, const std::vector<double>& x);
@@ -74,9 +90,14 @@ class PenaltyContact {
   const std::string& name() const { return def_.spec.name; }
   bool eroding() const { return def_.spec.eroding; }
   int soft() const { return def_.spec.SOFT; }
-  double energy() const { return energy_; }                  // J, includes friction and damping work
-  double friction_energy() const { return friction_energy_; }  // J, dissipated by friction
+  double energy() const { return energy_; }  // J, spring potential + friction + damping dissipation
+  double friction_energy() const { return friction_energy_; }  // J, dissipated by friction (part of energy())
+  double damping_energy() const { return damping_energy_; }    // J, dissipated by VDC (part of energy())
+  double taken() const { return taken_; }  // J, net work the bodies did against the contact forces
+  double created() const { return energy_ - taken_; }  // J, energy the discrete contact created (< 0: lost)
   const ContactForces& forces() const { return forces_; }
+  // Nodes released while behind the face they were in contact with, since the start.
+  const Penetrations& penetrations() const { return penetrations_; }
   // Nodes that can carry a contact force and their last forces (num, 3) — for rigid-body output.
   const std::vector<Index>& force_nodes() const { return set_.force_nodes(); }
   const std::vector<double>& node_forces() const { return fc_; }
@@ -103,6 +124,12 @@ class PenaltyContact {
  private:
   // After the segment set was (re)assembled at x: search reset and sort, forces and bounds sized.
   void start(const std::vector<double>& x);
+  // Books the work of the contact forces on the bodies: power_old = f^{last pass} . v, power_new =
+  // f^{this pass} . v (v = v^{n+1/2}), dt = dt^{n+1/2}.
+  void book_work(double power_old, double power_new, double dt);
+  // Node i, in contact with segment `last` at the last pass, is released now: a penetration if it
+  // is still behind that face (projecting onto it).
+  void check_release(std::size_t i, long last, const double* x, double time);
   // Exposure offsets (spring_history) of node i found on segment s (last: its segment of the last pass).
   void update_exposure(std::size_t i, long s, long last, const Projection& pr);
 
@@ -117,8 +144,12 @@ class PenaltyContact {
   std::vector<double> fc_, fc_prev_;
   std::vector<double> rows_;  // (U) Gershgorin row sums of the pass's springs, zeroed after use
   long exposures_ = 0;
-  double energy_ = 0, friction_energy_ = 0;
+  double energy_ = 0, friction_energy_ = 0, damping_energy_ = 0;
+  double taken_ = 0;       // J, book_work
+  double work_power_ = 0;  // W, f . v of the last pass, and its step: the first half of its work
+  double work_dt_ = 0;     // s   is corrected at the next pass (book_work)
   ContactForces forces_;
+  Penetrations penetrations_;
   StiffnessBounds bounds_;
   double dt_springs_ = std::numeric_limits<double>::infinity();
 };

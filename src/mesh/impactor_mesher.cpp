@@ -86,7 +86,7 @@ ImpactorMesh impactor_mass_properties(const config::ImpactorSpec& s) {
 
 namespace {
 
-// Script parameters: the element counts follow spec.element_size (N per quarter circumference, K
+// Script parameters: the element counts follow spec.element_size (N per quarter circumference, even, K
 // through the O-grid's shell or ring, M along a cylinder's body).
 struct Script {
   std::string name, parameters;
@@ -102,7 +102,11 @@ std::string num(double v) {
 Script script_for(const config::ImpactorSpec& spec) {
   const double r = spec.diameter / 2, h = spec.element_size, pi = std::numbers::pi;
   const auto count = [&](double length) { return std::to_string(std::max(1, int(std::ceil(length / h - 1e-9)))); };
-  const std::string n = std::to_string(std::max(2, int(std::ceil(0.5 * pi * r / h - 1e-9))));
+  // N even: the nose patch of the cubed sphere then has a node at its centre, the pole, whatever
+  // the element size (an odd N puts a face there, and first contact then depends on the size's
+  // parity: a flat face meets the plate later and all at once).
+  const int n_quarter = std::max(2, int(std::ceil(0.5 * pi * r / h - 1e-9)));
+  const std::string n = std::to_string(n_quarter + n_quarter % 2);
   // Core half-widths r / (2 sqrt 3) (cubed sphere) and r / (2 sqrt 2) (cylinder): the shell or ring
   // is r (1 - 0.289) or r (1 - 0.354) thick on the axes.
   const std::string k_sphere = count(r * (1 - 0.5 / std::sqrt(3.0))), k_ring = count(r * (1 - 0.5 / std::sqrt(2.0)));

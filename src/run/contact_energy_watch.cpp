@@ -39,10 +39,12 @@ std::vector<std::string> ContactEnergyWatch::warnings() const {
   std::vector<std::string> out;
   for (const Entry& e : entries_) {
     if (e.first_time < 0) continue;
-    char w[400];
+    char w[512];
     std::snprintf(w, sizeof w,
-                  "contact '%s': contact energy negative, below %.4g J (%.0f%% of the reference energy) from t = %.4g s, "
-                  "minimum %.4g J at %.4g s: the contact gave the bodies more energy than its springs stored",
+                  "contact '%s': created energy: the work it took from the bodies minus the energy its springs hold "
+                  "and it dissipated fell below %.4g J (%.0f%% of the reference energy) from t = %.4g s, minimum %.4g J "
+                  "at %.4g s: the contact gave the bodies more energy than they gave it (a spring that appeared already "
+                  "compressed)",
                   e.name.c_str(), e.threshold, 100 * kFraction, e.first_time, e.minimum, e.minimum_time);
     out.push_back(w);
   }

@@ -1,11 +1,12 @@
-// Watch on the sign of each contact's energy (run summary warning). A penalty contact stores
-// energy in its springs and dissipates it by friction and damping; it cannot give the bodies more
-// than it has taken from them. A contact energy below zero therefore means the contact model
-// created energy (a spring that appeared already compressed and pushed the bodies apart), which
-// LS-DYNA users look for in the GLSTAT/SLEOUT contact energy. The watch warns when the energy of a
-// contact first falls below -1 % of the reference energy (the initial total energy plus the
-// external work: the energy ratio's reference), naming the contact, the time it first crossed and
-// the lowest value reached. Checked every cycle, so a short dip between history samples counts.
+// Watch on the energy a penalty contact created (run summary warning). A contact takes energy
+// from the bodies (the work they do against its forces), holds it in its springs and dissipates
+// it by friction and damping; it cannot give them more than it took. The balance of each contact,
+// taken - (held + dissipated) = -PenaltyContact::created(), below zero therefore means the discrete
+// contact created energy (a spring that appeared already compressed and pushed the bodies apart),
+// which the energy ratio shows only for the whole model. The watch warns when that balance first
+// falls below -1 % of the reference energy (the initial total energy plus the external work: the
+// energy ratio's reference), naming the contact, the time it first crossed and the lowest value
+// reached. Checked every cycle, so a short dip between history samples counts.
 #pragma once
 
 #include <limits>
@@ -22,7 +23,7 @@ class ContactEnergyWatch {
 
   explicit ContactEnergyWatch(std::vector<std::string> names);
 
-  // energies[c]: energy of contact c (J) at time t (s); reference: J (<= 0: nothing is checked).
+  // energies[c]: balance of contact c, taken - held - dissipated (J) at time t (s); reference: J (<= 0: nothing is checked).
   void observe(const std::vector<double>& energies, double t, double reference);
 
   // One warning per contact that crossed the threshold.

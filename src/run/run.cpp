@@ -109,6 +109,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   InterfaceFrameWriter interfaces(model, options.output_dir, frame_interval);
   HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
   ContactEnergyCheck contact_energy(model);
+  ContactPenetrationCheck penetrations(options.progress);
   EnergyRatioCheck energy_ratio;
   SummaryWriter summary(model, options.output_dir / "summary.json", t_start);
   std::unique_ptr<ProgressLine> progress;
@@ -117,7 +118,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   // Stop order is the order of the warnings in summary.json; the summary comes last.
   std::vector<RunObserver*> observers = {&frames, &interfaces, &history};
   if (progress) observers.push_back(progress.get());
-  for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &energy_ratio, &summary})
+  for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &penetrations, &energy_ratio, &summary})
     observers.push_back(o);
 
   LoopOptions loop;

@@ -7,51 +7,87 @@
 
 namespace plyimpact::run {
 
-void HourglassCheck::after_cycle(const solver::Solver& solver) {
-  const double t = solver.state().time;
-  if (!samples_.due(t) || !(solver.balance().time > 0)) return;
-  samples_.advance(t);
-  const solver::Energies& e = solver.balance();
-  peak_internal_ = std::max(peak_internal_, e.internal());
-  if (peak_internal_ > 0) max_ratio_ = std::max(max_ratio_, e.hourglass() / peak_internal_);
-}
-
-void HourglassCheck::stop(const solver::Solver* solver, RunReport& report) {
-  (void)solver;
-  if (!(max_ratio_ > warn_ratio_)) return;
-  char w[200];
-  std::snprintf(w, sizeof w, "hourglass energy reached %.1f%% of the peak internal energy (limit %.1f%%): refine the mesh "
-                "(more elements through the thickness) or use ELFORM 2", 100 * max_ratio_, 100 * warn_ratio_);
-  report.warnings.push_back(w);
-}
-
-void HourglassCheck::visit_state(StateVisitor& visitor) {
-  StateGroup group(visitor, "hourglass_check");
-  samples_.visit_state(visitor, "next_sample_time");
-  visitor.scalar("max_ratio", max_ratio_);
-  visitor.scalar("peak_internal", peak_internal_);
-}
-
 namespace {
+
+// The energy ratio's reference: initial total energy + external work.
+double reference_energy(const solver::Solver& solver) {
+  return solver.state().initial_total_energy + solver.balance().external_work();
+}
+
 std::vector<std::string> contact_names(const model::Model& model) {
   std::vector<std::string> names;
   for (const auto& c : model.contacts) names.push_back(c.spec.name);
   return names;
 }
+
+// "node 1234 at t = 1.2e-05 s, 0.31 mm deep": the node as its 1-based number (the .msh tag).
+std::string describe(const contact::PenetrationEvent& e) {
+  char b[160];
+  std::snprintf(b, sizeof b, "node %ld at t = %.4g s, %.4g mm deep", long(e.node) + 1, e.time, 1e3 * e.depth);
+  return b;
+}
+
 }  // namespace
+
+void HourglassCheck::after_cycle(const solver::Solver& solver) {
+  const double t = solver.state().time;
+  if (!samples_.due(t) || !(solver.balance().time > 0)) return;
+  samples_.advance(t);
+  const solver::Energies& e = solver.balance();
+  watch_.observe(e.time, e.hourglass(), e.internal(), reference_energy(solver));
+}
+
+void HourglassCheck::stop(const solver::Solver* solver, RunReport& report) {
+  (void)solver;
+  if (watch_.exceeded()) report.warnings.push_back(watch_.warning());
+}
+
+void HourglassCheck::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "hourglass_check");
+  samples_.visit_state(visitor, "next_sample_time");
+  watch_.visit_state(visitor);
+}
 
 ContactEnergyCheck::ContactEnergyCheck(const model::Model& model)
     : watch_(contact_names(model)), energies_(model.contacts.size(), 0.0) {}
 
 void ContactEnergyCheck::after_cycle(const solver::Solver& solver) {
   if (energies_.empty()) return;
-  for (std::size_t c = 0; c < energies_.size(); ++c) energies_[c] = solver.contacts()[c].energy();
-  watch_.observe(energies_, solver.state().time, solver.state().initial_total_energy + solver.balance().external_work());
+  // What the contact took from the bodies minus what it holds and dissipated: below zero it gave
+  // them energy nobody put in.
+  for (std::size_t c = 0; c < energies_.size(); ++c) energies_[c] = -solver.contacts()[c].created();
+  watch_.observe(energies_, solver.state().time, reference_energy(solver));
 }
 
 void ContactEnergyCheck::stop(const solver::Solver* solver, RunReport& report) {
   (void)solver;
   for (const auto& w : watch_.warnings()) report.warnings.push_back(w);
+}
+
+void ContactPenetrationCheck::after_cycle(const solver::Solver& solver) {
+  const auto& contacts = solver.contacts();
+  reported_.resize(contacts.size(), 0);
+  for (std::size_t c = 0; c < contacts.size(); ++c) {
+    const contact::Penetrations& p = contacts[c].penetrations();
+    if (p.count == 0 || p.count < 2 * reported_[c] || p.count == reported_[c]) continue;
+    if (out_)
+      *out_ << "warning: contact '" << contacts[c].name() << "': " << p.count << " node(s) passed through the surface "
+            << "and were released, the latest " << describe(p.last) << "\n";
+    reported_[c] = p.count;
+  }
+}
+
+void ContactPenetrationCheck::stop(const solver::Solver* solver, RunReport& report) {
+  if (!solver) return;
+  for (const auto& c : solver->contacts()) {
+    const contact::Penetrations& p = c.penetrations();
+    if (p.count == 0) continue;
+    report.warnings.push_back("contact '" + c.name() + "': " + std::to_string(p.count) +
+                              " penetration(s): nodes passed through the surface and were released (the contact "
+                              "no longer holds them), first " + describe(p.first) + ", deepest " +
+                              describe(p.deepest) + "; the bodies interpenetrate: raise the penalty (SLSFAC, SOFT 1) "
+                              "or refine the contact surfaces");
+  }
 }
 
 void EnergyRatioCheck::stop(const solver::Solver* solver, RunReport& report) {

@@ -1,29 +1,33 @@
 // Checks that watch a run and leave a warning in the report (and so in summary.json):
-//   HourglassCheck      hourglass energy against the PEAK internal energy, as in LS-DYNA practice
-//                       (a running ratio is meaningless early on, when the internal energy is tiny);
-//                       sampled with the history rows.
-//   ContactEnergyCheck  a contact's energy below zero (run/contact_energy_watch), every cycle.
-//   EnergyRatioCheck    final energy ratio off 1 by more than 5 %.
+//   HourglassCheck          hourglass energy against the peak internal energy, on a denominator
+//                           that cannot be ~0 (run/hourglass_watch); sampled with the history rows.
+//   ContactEnergyCheck      energy a contact created: the work its forces did on the bodies beyond
+//                           what they did against it (run/contact_energy_watch), every cycle.
+//   ContactPenetrationCheck nodes a contact released while still behind the face they were in
+//                           contact with (penetrations): a line when they happen (throttled) and a
+//                           warning with the first and the deepest.
+//   EnergyRatioCheck        final energy ratio off 1 by more than 5 %.
 #pragma once
 
+#include <ostream>
 #include <vector>
 
 #include "run/contact_energy_watch.hpp"
+#include "run/hourglass_watch.hpp"
 #include "run/run_observer.hpp"
 
 namespace plyimpact::run {
 
 class HourglassCheck : public RunObserver {
  public:
-  HourglassCheck(double sample_interval, double warn_ratio) : samples_(sample_interval), warn_ratio_(warn_ratio) {}
+  HourglassCheck(double sample_interval, double warn_ratio) : samples_(sample_interval), watch_(warn_ratio) {}
   void after_cycle(const solver::Solver& solver) override;
   void stop(const solver::Solver* solver, RunReport& report) override;
   void visit_state(StateVisitor& visitor) override;
 
  private:
   Sampler samples_;
-  double warn_ratio_;
-  double max_ratio_ = 0, peak_internal_ = 0;
+  HourglassWatch watch_;
 };
 
 class ContactEnergyCheck : public RunObserver {
@@ -36,6 +40,19 @@ class ContactEnergyCheck : public RunObserver {
  private:
   ContactEnergyWatch watch_;
   std::vector<double> energies_;
+};
+
+class ContactPenetrationCheck : public RunObserver {
+ public:
+  // out: where a line is printed when penetrations happen (null: none); the first of a contact and
+  // then each time its count doubles, so a plate going through does not flood the output.
+  explicit ContactPenetrationCheck(std::ostream* out = nullptr) : out_(out) {}
+  void after_cycle(const solver::Solver& solver) override;
+  void stop(const solver::Solver* solver, RunReport& report) override;
+
+ private:
+  std::ostream* out_;
+  std::vector<long> reported_;  // per contact, the count last printed
 };
 
 class EnergyRatioCheck : public RunObserver {

@@ -73,6 +73,27 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     j["time_step"] = solver->state().dt_next_half;
     j["controlling_element"] = solver->state().dt_element;
   }
+  if (solver && !solver->contacts().empty()) {  // nodes released behind a face (ContactPenetrationCheck)
+    output::Json pen = output::Json::array();
+    auto event = [](const contact::PenetrationEvent& e) {
+      output::Json o = output::Json::object();
+      o["node"] = std::int64_t(e.node) + 1;  // 1-based, the .msh tag
+      o["time"] = e.time;
+      o["depth"] = e.depth;
+      return o;
+    };
+    for (const auto& c : solver->contacts()) {
+      output::Json entry = output::Json::object();
+      entry["contact"] = c.name();
+      entry["count"] = std::int64_t(c.penetrations().count);
+      if (c.penetrations().count > 0) {
+        entry["first"] = event(c.penetrations().first);
+        entry["deepest"] = event(c.penetrations().deepest);
+      }
+      pen.push_back(entry);
+    }
+    j["contact_penetrations"] = pen;
+  }
   output::Json warnings = output::Json::array();
   for (const auto& w : report.warnings) warnings.push_back(w);
   j["warnings"] = warnings;

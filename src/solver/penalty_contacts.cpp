@@ -60,7 +60,7 @@ PenaltyContacts::PenaltyContacts(const model::Model& model, std::vector<double>&
 void PenaltyContacts::apply(const ForceContext& ctx) {
   double ec = 0, ef = 0;
   for (auto& c : contacts_) {
-    c.apply(ctx.x, ctx.v, ctx.f, ctx.dt);
+    c.apply(ctx.x, ctx.v, ctx.f, ctx.dt, ctx.time);
     ec += c.energy();
     ef += c.friction_energy();
   }

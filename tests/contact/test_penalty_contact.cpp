@@ -19,6 +19,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 #include "head_on_blocks.hpp"
 #include "punch_on_base.hpp"
@@ -73,13 +74,44 @@ TEST_P(HeadOn, MomentumToRoundOffAndEnergyAccountedFor) {
 
 auto soft_name = [](const auto& info) { return "SOFT" + info.param.substr(6, 1); };
 INSTANTIATE_TEST_SUITE_P(Soft, HeadOn, ::testing::Values("SOFT: 0", "SOFT: 2"), soft_name);
-// Known defect, disabled: with SOFT 1's soft term governing, momentum holds to round-off but the
-// energy balance is off by 3.5 % (1.8 % at DTSTIF 5e-8, where the soft term is only twice SOFT 0's)
-// and the contact energy ends at -2.2e-4 J, 13 % of its peak, where SOFT 0 and 2 stay within 0.7 %.
-// Suspected (not traced): the soft stiffness depends on the segment (min of node and segment node
-// mass), so a node passing to a segment of another stiffness changes its spring's potential
-// without work being booked.
-INSTANTIATE_TEST_SUITE_P(DISABLED_SoftOneGoverning, HeadOn, ::testing::Values("SOFT: 1, DTSTIF: 2.0e-8"), soft_name);
+// SOFT 1 with its soft term governing (DTSTIF 2e-8 s, springs ~5x SOFT 0's, omega dt near 1):
+// momentum to round-off as above; the contact energy is the springs' potential (frictionless,
+// undamped), so once the blocks have separated it is exactly 0 (it used to end at -2.2e-4 J, 13 % of
+// its peak, from springs dropped and switched with their potential kept in the booking). The
+// energy ratio after separation, mean over the cycles after the last spring let go (the kinetic
+// energy of the mean half-step velocities oscillates with the blocks' free vibration), within 1 %
+// as for SOFT 0 and 2 (measured 0.996). During the few cycles of contact a spring that starts part
+// way through a step costs the bodies up to 0.5 k |g| (v dt - |g|) more than it holds, returned at
+// release: with omega dt near 1 the ratio dips 3 % there, which is why the whole-run 1 % of the
+// other options is not asserted here.
+TEST(HeadOnSoftOne, ContactEnergyEndsAtZeroAndTheBodiesKeepTheirEnergy) {
+  const model::Model model = test::model_from_yaml(test::head_on_blocks("SOFT: 1, DTSTIF: 2.0e-8"), "head_on.yaml");
+  solver::Solver solver(model);
+  double p0[3], max_dp = 0, mass = 0, peak_contact = 0;
+  for (std::size_t i = 0; i < model.num_nodes(); ++i) mass += model.mass[i];
+  momentum(model, solver, p0);
+  std::vector<double> ratios;
+  std::size_t last_contact = 0;
+  while (solver.state().time < 3 * 43e-6) {
+    solver.step();
+    double p[3];
+    momentum(model, solver, p);
+    for (int d = 0; d < 3; ++d) max_dp = std::max(max_dp, std::abs(p[d] - p0[d]));
+    ratios.push_back(solver.energy_ratio());
+    if (solver.contacts()[0].forces().active > 0) last_contact = ratios.size();
+    peak_contact = std::max(peak_contact, solver.balance().value("contact"));
+  }
+  ASSERT_LT(last_contact + 100, ratios.size());
+  double mean = 0;
+  for (std::size_t i = last_contact + 1; i < ratios.size(); ++i) mean += ratios[i];
+  mean /= double(ratios.size() - last_contact - 1);
+  std::cout << "head-on SOFT 1 governing: peak contact energy " << peak_contact << " J, final "
+            << solver.balance().value("contact") << " J, mean ratio after separation " << mean << "\n";
+  EXPECT_LT(max_dp / (0.5 * mass * 5.0), 1e-12);
+  EXPECT_GT(peak_contact, 0.0);
+  EXPECT_EQ(solver.balance().value("contact"), 0.0);
+  EXPECT_LT(std::abs(mean - 1), 0.01);
+}
 
 // SOFT 1 where its soft-constraint stiffness governs: a rigid cube (MAT_020, one element of 2 mm,
 // mass M) drops flat at v = 1 m/s onto a steel plate (one larger element, its base fixed) through
@@ -199,10 +231,12 @@ TEST(RigidImpactor, MomentumOfBodyAndBlockConserved) {
 
 // Known defect, disabled: the energy of the same impact. Reference: conservation (elastic block,
 // rigid body, frictionless undamped contact; bulk viscosity is booked), within 1 % as for the
-// head-on blocks (second-order booking of the penalty work, 0.7 % measured there). Measured: the
-// ratio falls to 0.980 during the contact pulse (t = 20.9 to 23.7 us, about 20 steps) and stays
-// there; at TSSFAC 0.45 the loss is 0.5 %. Not traced: the rigid body's share of the contact work
-// or a pulse resolved in too few steps for the combined step.
+// head-on blocks. Measured: the ratio falls to 0.979 in the first contact step and ends at 0.982
+// (0.5 % at TSSFAC 0.45). Not the booking: the contact energy is its springs' potential (0 after
+// separation) and the work the contact took from the bodies, weighted as the integrator applies
+// its forces, is 2.3 % of the initial energy, so the bodies really lost it. Suspected: the 18
+// nodes of the flat faces engage in the same step part way through it, each costing the bodies
+// 0.5 k |g| (v dt - |g|) more than its spring holds, and the release does not give it back.
 TEST(RigidImpactor, DISABLED_EnergyOfBodyAndBlockConserved) {
   const model::Model model = test::model_from_yaml(rigid_impactor_scene(), "rigid_impactor.yaml");
   solver::Solver solver(model);

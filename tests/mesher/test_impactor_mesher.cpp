@@ -225,3 +225,46 @@ TEST_P(ImpactorShapes, BlockingVolumeAndMassProperties) {
 
 INSTANTIATE_TEST_SUITE_P(Shapes, ImpactorShapes, ::testing::ValuesIn(kShapes),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// The nose is a node whatever the element size: the cubed sphere's nose patch has N elements per
+// edge, and its centre (the pole) is a node only for even N. D = 10 mm: h = 2.2 gives
+// ceil(7.85 / 2.2) = 4 and h = 1.8 gives 5, raised to 6; h = 1.3 gives 7, raised to 8. Reference:
+// the exact pole, (x, y) on the axis and z = plate top (0.5 mm) + gap (0.5 mm), to gmsh round-off
+// (1e-12 m); and exactly one surface node there (a face at the pole would put four nodes at the
+// lowest height, none on the axis). Same for the hemispherical nose of the tup.
+TEST(ImpactorMesher, PoleIsANodeForAnyElementSize) {
+  for (const char* shape : {"sphere", "hemispherical_cylinder"})
+    for (const char* h : {"2.2", "1.8", "1.3"}) {
+      const config::Scene s = scene(std::string("shape: ") + shape + ", diameter: 10, mass: 0.1 kg, gap: 0.5, "
+                                    "velocity: 2 m/s, element_size: " + h);
+      const mesh::Mesh m = mesh::mesh_scene(s);
+      const auto& imp = *m.impactor;
+      double lowest = 1e300;
+      for (std::size_t a = 2; a < imp.surface_coords.size(); a += 3) lowest = std::min(lowest, imp.surface_coords[a]);
+      int at_pole = 0, lowest_level = 0;
+      for (std::size_t a = 0; a < imp.surface_coords.size(); a += 3) {
+        const double* p = &imp.surface_coords[a];
+        if (p[2] > lowest + 1e-9) continue;
+        ++lowest_level;
+        if (std::hypot(p[0] - 5e-3, p[1] - 5e-3) < 1e-12) ++at_pole;
+      }
+      EXPECT_NEAR(lowest, 1e-3, 1e-12) << shape << " h " << h;
+      EXPECT_EQ(at_pole, 1) << shape << " h " << h;
+      EXPECT_EQ(lowest_level, 1) << shape << " h " << h;
+    }
+}
+
+// An element size above the radius cannot be meshed as asked (at least two elements per quarter
+// circumference): refused at the key with the allowed range, as the reader does for any bound.
+TEST(ImpactorMesher, ElementSizeAboveTheRadiusIsRefusedAtItsKey) {
+  try {
+    scene("shape: sphere, diameter: 10, mass: 0.1 kg, velocity: 2 m/s, element_size: 500");
+    FAIL() << "accepted an element size of 50 diameters";
+  } catch (const InputError& e) {
+    const std::string w = e.what();
+    EXPECT_NE(w.find("impactor.yaml:"), std::string::npos) << w;
+    EXPECT_NE(w.find("impactor.element_size"), std::string::npos) << w;
+    EXPECT_NE(w.find("at most the radius"), std::string::npos) << w;
+  }
+  EXPECT_NO_THROW(scene("shape: sphere, diameter: 10, mass: 0.1 kg, velocity: 2 m/s, element_size: 5"));
+}
