@@ -7,10 +7,13 @@
 // as it does the contact springs). A pre-crack is part of the initial history: the pairs whose
 // reference position lies in the region start with damage 1 (separated: contact only).
 // History: the delaminated (damage 1) area in total and per interface, pre-crack included.
+// An interface with `model: cohesive` gets *MAT_138 cohesive elements (cohesive::CohesiveElements,
+// one per interface segment) instead of pairs; they report under the same energies and columns.
 #pragma once
 
 #include <vector>
 
+#include "cohesive/cohesive_elements.hpp"
 #include "cohesive/tiebreak_pairs.hpp"
 #include "solver/force_contributor.hpp"
 
@@ -39,10 +42,15 @@ class InterfaceTiebreaks : public solver::ForceContributor {
   const std::vector<cohesive::TiebreakPairs>& pairs() const { return pairs_; }
   const std::vector<int>& interface_ids() const { return ids_; }  // 1-based number of each pairs_ entry
   double delaminated_area() const;                                 // m^2, all interfaces
+  const std::vector<cohesive::CohesiveElements>& cohesive() const { return cohesive_; }
+  const std::vector<int>& cohesive_ids() const { return cohesive_ids_; }  // 1-based number of each cohesive_ entry
 
  private:
   std::vector<cohesive::TiebreakPairs> pairs_;
   std::vector<int> ids_;
+  std::vector<cohesive::CohesiveElements> cohesive_;
+  std::vector<int> cohesive_ids_;
+  std::vector<std::pair<bool, std::size_t>> columns_;  // per interface in id order: (cohesive, index)
   std::vector<std::string> warnings_;
   double stable_step_ = 0;
 };
@@ -50,5 +58,11 @@ class InterfaceTiebreaks : public solver::ForceContributor {
 // The kernel of one interface (exposed for `check` and tests): pairs, areas, normals and faces of
 // `itf`, its law, and its pre-crack applied to the initial damage.
 cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const model::Interface& itf);
+
+// The *MAT_138 elements of one `model: cohesive` interface: one per interface segment (lower face from
+// the lower segment, upper face from the partner nodes), its law, and its pre-crack: an element whose
+// lower nodes include one in the region starts separated, so the same nodes are free as with the
+// tiebreak's rule (pairs in the region start separated).
+cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, const model::Interface& itf);
 
 }  // namespace plyimpact::interface

@@ -1,0 +1,245 @@
+// The double cantilever beam of test_dcb.cpp run twice through the whole chain (scene, mesher, model
+// builder, interface contributor, explicit solver): once with tiebreak OPTION 9 pairs and once with
+// *MAT_138 cohesive elements with the same constants (EN = CN, ET = CT2CN CN, T = NFLS, S = SFLS,
+// GIC = ERATEN, GIIC = ERATES, XMU = PARAM) and the same pre-crack region.
+//
+// Why the two should agree: both apply the same point law (cohesive/traction_law.hpp) to the same
+// opening field of the same mesh. The tiebreak integrates it at the nodes (each pair carries its
+// tributary area: nodal, trapezoidal quadrature), the element at the 2 x 2 Gauss points of each
+// segment. The arms' compliance is the same; the interface's own compliance (opening NFLS/CN =
+// 0.2 um at the peak against an arm opening of 1.2 mm) is negligible in both, so before the crack
+// moves they differ only by round-off. The pre-crack frees the same nodes (the element rule frees
+// the elements with a node in the region, the tiebreak the pairs in it). During propagation both
+// dissipate G_Ic per unit area (test_cohesive_element) and the load follows G_I = G_Ic; what
+// differs is how the cohesive zone (about 4 segments long here) is sampled: 2 points per segment
+// instead of 1 node, so the damage front advances in half-segment steps instead of one-segment
+// steps. One segment changes the load on the propagation branch by 1/27.6 = 3.6 % (test_dcb.cpp);
+// both curves are the mean over 0.1 ms, which averages the front's jumps. The issue asks for 2 %.
+// We compare the cohesive load at the tiebreak's openings, relative to the tiebreak's peak load,
+// from 20 % of that peak on the rising branch to the end of the run.
+//
+// Also: the cohesive run's energy ratio stays within 1 +- 0.01 through the propagation (as in
+// test_dcb.cpp: from the moment the external work reaches 5 % of the strain energy at the critical
+// opening); the delaminated area grows; a restart through visit_state continues bit for bit.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "config/scene_loader.hpp"
+#include "core/state_io.hpp"
+#include "interface/interface_tiebreaks.hpp"
+#include "mesh/scene_mesher.hpp"
+#include "model/model.hpp"
+#include "solver/solver.hpp"
+
+namespace plyimpact {
+namespace {
+
+constexpr double kRamp = 0.6e-3, kEnd = 2.5e-3;  // s
+constexpr double kOpeningRate = 0.7;              // m/s per arm (test_dcb.cpp says why)
+constexpr double kWindow = 0.1e-3;                // s, load averaging window (test_dcb.cpp)
+
+const char* kTiebreak =
+    "{select: [1], model: tiebreak, OPTION: 9, NFLS: 20 MPa, SFLS: 20 MPa, ERATEN: 200 J/m^2,\n"
+    "               ERATES: 400 J/m^2, PARAM: 1, CN: 100 kN/mm^3, CT2CN: 1, precrack: {x: [0, 25]}}";
+const char* kCohesive =
+    "{select: [1], model: cohesive, T: 20 MPa, S: 20 MPa, GIC: 200 J/m^2, GIIC: 400 J/m^2,\n"
+    "               XMU: 1, EN: 100 kN/mm^3, ET: 100 kN/mm^3, precrack: {x: [0, 25]}}";
+
+std::string dcb_scene(const char* interfaces) {
+  std::ostringstream y;
+  y << "units: mm-t-s-MPa\n"
+       "control: {termination_time: " << kEnd << "}\n"
+       "materials:\n"
+       "  ud:\n"
+       "    card: MAT_002\n"
+       "    RO: 1500 kg/m^3\n"
+       "    EA: 120 GPa\n    EB: 10 GPa\n    EC: 10 GPa\n"
+       "    PRBA: 0.025\n    PRCA: 0.025\n    PRCB: 0.45\n"
+       "    GAB: 5 GPa\n    GBC: 3.5 GPa\n    GCA: 5 GPa\n"
+       "    AOPT: 2\n    A: [1, 0, 0]\n    D: [0, 1, 0]\n"
+       "sections:\n  arm: {ELFORM: 1, IHQ: 6, QM: 1}\n"
+       "laminate:\n"
+       "  length: 60\n  width: 2\n  ply_thickness: 1.5\n  stacking: [0, 0]\n"
+       "  material: ud\n  section: arm\n  elements_per_ply: 2\n  element_size: 1\n"
+       "  interfaces: " << interfaces << "\n"
+       "node_sets:\n"
+       "  tip_top: {box: {min: [-0.01, -1, 1.6], max: [0.01, 3, 3.1]}}\n"
+       "  tip_bottom: {box: {min: [-0.01, -1, -0.1], max: [0.01, 3, 1.4]}}\n"
+       "boundary_conditions:\n";
+  for (int side = 0; side < 2; ++side) {
+    y << "  - {node_set: " << (side == 0 ? "tip_top" : "tip_bottom") << ", velocity: {dofs: [z], curve: [";
+    const double sign = side == 0 ? 1 : -1;
+    for (int i = 0; i <= 24; ++i) {
+      const double t = kRamp * i / 24;
+      y << "[" << t << " s, " << sign * kOpeningRate * 0.5 * (1 - std::cos(std::numbers::pi * t / kRamp)) << " m/s], ";
+    }
+    y << "[" << kEnd << " s, " << sign * kOpeningRate << " m/s]]}}\n";
+  }
+  return y.str();
+}
+
+// Corrected beam theory of the arms (test_dcb.cpp: Williams 1989, ASTM D5528) for the pre-crack.
+constexpr double E11 = 120e9, E22 = 10e9, G13 = 5e9, h = 1.5e-3, b = 2e-3, a0 = 25e-3, GIc = 200;
+double williams_delta() {
+  const double gamma = 1.18 * std::sqrt(E11 * E22) / G13;
+  const double r = gamma / (1 + gamma);
+  return h * std::sqrt(E11 / (11 * G13) * (3 - 2 * r * r));
+}
+double critical_load() { return b / (a0 + williams_delta()) * std::sqrt(E11 * h * h * h * GIc / 12); }
+double critical_opening() { return 8 * std::pow(a0 + williams_delta(), 3) / (E11 * b * h * h * h) * critical_load(); }
+
+const interface::InterfaceTiebreaks* interfaces_of(const solver::Solver& s) {
+  for (const auto& c : s.contributors())
+    if (auto* p = dynamic_cast<const interface::InterfaceTiebreaks*>(c.get())) return p;
+  return nullptr;
+}
+
+struct Curve {
+  std::vector<double> opening, load;  // m, N (window means)
+  double max_ratio_err = 0;           // |energy ratio - 1| once the work is significant
+  double precrack_area = 0, final_area = 0, dissipated = 0;
+  long cycles = 0;
+  double wall = 0;
+};
+
+Curve run_dcb(const char* interfaces) {
+  const auto start = std::chrono::steady_clock::now();
+  const config::Scene scene = config::load_scene_from_string(dcb_scene(interfaces), "dcb.yaml");
+  const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
+  solver::Solver solver(model);
+  Curve c;
+  c.precrack_area = interfaces_of(solver)->delaminated_area();
+  const auto& tops = model.node_sets[model.constrained_sets[0]];
+  // The ratio is judged once the external work reaches 5 % of the strain energy 1/2 P_c delta_c at the
+  // critical opening (corrected beam theory with the pre-crack a0 = 25 mm, as test_dcb.cpp).
+  const double work_threshold = 0.05 * 0.5 * critical_load() * critical_opening();
+  std::vector<double> times, openings, loads;
+  double opening = 0;
+  while (solver.state().time < kEnd * (1 - 1e-12)) {
+    const double dt = solver.state().dt_next_half;
+    solver.step();
+    const auto& s = solver.state();
+    opening += 2 * s.v[3 * std::size_t(tops.nodes[0]) + 2] * dt;
+    times.push_back(s.time);
+    openings.push_back(opening);
+    loads.push_back(std::abs(s.reaction[2]));
+    if (solver.balance().external_work() > work_threshold)
+      c.max_ratio_err = std::max(c.max_ratio_err, std::abs(solver.energy_ratio() - 1));
+  }
+  std::size_t lo = 0, hi = 0;
+  double sum = 0;
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (times[i] - kWindow / 2 < 0 || times[i] + kWindow / 2 > times.back()) continue;
+    while (hi < times.size() && times[hi] <= times[i] + kWindow / 2) sum += loads[hi++];
+    while (times[lo] < times[i] - kWindow / 2) sum -= loads[lo++];
+    c.opening.push_back(openings[i]);
+    c.load.push_back(sum / double(hi - lo));
+  }
+  c.final_area = interfaces_of(solver)->delaminated_area();
+  c.dissipated = solver.balance().value("interface_dissipated");
+  c.cycles = solver.state().cycle;
+  c.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return c;
+}
+
+// Load of `c` at `opening` (linear interpolation; the openings increase monotonically).
+double load_at(const Curve& c, double opening) {
+  const auto it = std::lower_bound(c.opening.begin(), c.opening.end(), opening);
+  if (it == c.opening.begin()) return c.load.front();
+  if (it == c.opening.end()) return c.load.back();
+  const std::size_t k = std::size_t(it - c.opening.begin());
+  const double w = (opening - c.opening[k - 1]) / (c.opening[k] - c.opening[k - 1]);
+  return c.load[k - 1] + w * (c.load[k] - c.load[k - 1]);
+}
+
+TEST(CohesiveDCB, Option9AndMat138AgreeOnTheLoadOpeningCurve) {
+  const Curve tb = run_dcb(kTiebreak);
+  const Curve ce = run_dcb(kCohesive);
+  double peak_tb = 0, peak_ce = 0, open_tb = 0, open_ce = 0;
+  for (std::size_t i = 0; i < tb.load.size(); ++i)
+    if (tb.load[i] > peak_tb) {
+      peak_tb = tb.load[i];
+      open_tb = tb.opening[i];
+    }
+  for (std::size_t i = 0; i < ce.load.size(); ++i)
+    if (ce.load[i] > peak_ce) {
+      peak_ce = ce.load[i];
+      open_ce = ce.opening[i];
+    }
+  double max_diff = 0, at = 0, rms = 0;
+  std::size_t n = 0;
+  bool rising = false;
+  for (std::size_t i = 0; i < tb.load.size(); ++i) {
+    if (tb.load[i] > 0.2 * peak_tb) rising = true;
+    if (!rising || tb.opening[i] > ce.opening.back()) continue;
+    const double diff = std::abs(load_at(ce, tb.opening[i]) - tb.load[i]) / peak_tb;
+    rms += diff * diff;
+    ++n;
+    if (diff > max_diff) {
+      max_diff = diff;
+      at = tb.opening[i];
+    }
+  }
+  rms = std::sqrt(rms / double(std::max<std::size_t>(n, 1)));
+  const double end_tb = tb.load.back(), end_ce = load_at(ce, tb.opening.back());
+  std::printf("tiebreak OPTION 9: %ld cycles, %.2f s; peak %.5g N at %.4g mm; final %.5g N; delaminated %.4g mm^2 "
+              "(pre-crack %.4g); dissipated %.4g mJ; max |ratio - 1| %.2e\n",
+              tb.cycles, tb.wall, peak_tb, open_tb * 1e3, end_tb, tb.final_area * 1e6, tb.precrack_area * 1e6,
+              tb.dissipated * 1e3, tb.max_ratio_err);
+  std::printf("*MAT_138 elements: %ld cycles, %.2f s; peak %.5g N at %.4g mm; final %.5g N; delaminated %.4g mm^2 "
+              "(pre-crack %.4g); dissipated %.4g mJ; max |ratio - 1| %.2e\n",
+              ce.cycles, ce.wall, peak_ce, open_ce * 1e3, end_ce, ce.final_area * 1e6, ce.precrack_area * 1e6,
+              ce.dissipated * 1e3, ce.max_ratio_err);
+  std::printf("load difference / tiebreak peak: max %.2f %% at %.4g mm, rms %.2f %%; peak %+.2f %%, final %+.2f %%\n",
+              100 * max_diff, at * 1e3, 100 * rms, 100 * (peak_ce / peak_tb - 1), 100 * (end_ce / end_tb - 1));
+
+  EXPECT_LT(max_diff, 0.02) << "the issue's 2 % on the load-opening curve";
+  EXPECT_LT(ce.max_ratio_err, 0.01);
+  EXPECT_GT(ce.final_area, ce.precrack_area + 5 * 2e-3 * 1e-3) << "the crack grew by several segments";
+  // The same nodes start free: the element rule's pre-crack covers whole segments up to the first
+  // node past the region, the pairs' tributary strips end half a segment before it.
+  EXPECT_NEAR(ce.precrack_area, tb.precrack_area + 0.5e-3 * 2e-3, 1e-12);
+}
+
+// Restart through the propagation with *MAT_138 elements: the per-point history and the dissipated
+// energy are run state; a run written after the damage zone formed and read into a fresh solver
+// continues bit for bit as the uninterrupted one.
+TEST(CohesiveDCB, RestartDuringPropagationIsBitIdentical) {
+  const config::Scene scene = config::load_scene_from_string(dcb_scene(kCohesive), "dcb.yaml");
+  const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
+  const auto damaged = [](const solver::Solver& s) {
+    std::size_t n = 0;
+    for (double d : interfaces_of(s)->cohesive()[0].damage()) n += d > 0 && d < 1;
+    return n;
+  };
+  solver::Solver a(model);
+  while (a.state().time < 1.3e-3) a.step();
+  ASSERT_GT(damaged(a), 0u);
+  std::stringstream file;
+  StateWriter writer(file);
+  a.visit_state(writer);
+  solver::Solver b(model);
+  StateReader reader(file, "memory");
+  b.visit_state(reader);
+  for (int i = 0; i < 2000; ++i) {
+    a.step();
+    b.step();
+  }
+  StateDigest da, db;
+  a.visit_state(da);
+  b.visit_state(db);
+  EXPECT_EQ(da.value(), db.value());
+  EXPECT_EQ(a.balance().value("interface_dissipated"), b.balance().value("interface_dissipated"));
+  EXPECT_GT(a.balance().value("interface_dissipated"), 0.0);
+}
+
+}  // namespace
+}  // namespace plyimpact
