@@ -14,12 +14,14 @@ namespace {
 // Elements per chunk of the energy sums: fixed, so the sums do not depend on the thread count.
 constexpr std::size_t kChunk = 256;
 
-// Bilinear quad: corner a at (xi_a, eta_a); Gauss point g at (xi_a, eta_a) / sqrt(3) of corner g.
-struct QuadTables {
+}  // namespace
+
+// Bilinear quad: corner a at (xi_a, eta_a); point g at r (xi_g, eta_g), r = 1/sqrt(3) (Gauss) or 1
+// (Newton-Cotes: the corners, where N_a(g) = 1 for a = g and 0 otherwise).
+struct CohesiveElements::QuadTables {
   double N[4][4], dxi[4][4], deta[4][4];  // [point][corner]
-  QuadTables() {
+  explicit QuadTables(double r) {
     const double xi[4] = {-1, 1, 1, -1}, eta[4] = {-1, -1, 1, 1};
-    const double r = 1 / std::sqrt(3.0);
     for (int g = 0; g < 4; ++g)
       for (int a = 0; a < 4; ++a) {
         const double x = r * xi[g], y = r * eta[g];
@@ -29,7 +31,12 @@ struct QuadTables {
       }
   }
 };
-const QuadTables kQuad;
+
+namespace {
+
+using Quad = CohesiveElements::QuadTables;
+const Quad kGauss(1 / std::sqrt(3.0));
+const Quad kNewtonCotes(1.0);
 
 inline void cross(const double a[3], const double b[3], double c[3]) {
   c[0] = a[1] * b[2] - a[2] * b[1];
@@ -52,13 +59,13 @@ inline void gather(const double* x, const Index* nodes, ElementCoords& c) {
 }
 
 // Mid-surface tangents at point g and their cross product (the vector area density).
-inline void tangents(const ElementCoords& c, int g, double a1[3], double a2[3], double an[3]) {
+inline void tangents(const Quad& q, const ElementCoords& c, int g, double a1[3], double a2[3], double an[3]) {
   for (int i = 0; i < 3; ++i) {
     a1[i] = a2[i] = 0;
     for (int a = 0; a < 4; ++a) {
       const double m = 0.5 * (c.xl[a][i] + c.xu[a][i]);
-      a1[i] += kQuad.dxi[g][a] * m;
-      a2[i] += kQuad.deta[g][a] * m;
+      a1[i] += q.dxi[g][a] * m;
+      a2[i] += q.deta[g][a] * m;
     }
   }
   cross(a1, a2, an);
@@ -69,9 +76,10 @@ struct PointFrame {
 };
 
 // Frame and local opening (normal, shear 1, shear 2) at point g.
-[[gnu::always_inline]] inline void point_kinematics(const ElementCoords& c, int g, PointFrame& fr, double u[3]) {
+[[gnu::always_inline]] inline void point_kinematics(const Quad& q, const ElementCoords& c, int g, PointFrame& fr,
+                                                    double u[3]) {
   double a1[3], a2[3], an[3];
-  tangents(c, g, a1, a2, an);
+  tangents(q, c, g, a1, a2, an);
   const double inv_n = 1 / std::sqrt(dot(an, an)), inv_1 = 1 / std::sqrt(dot(a1, a1));
   for (int i = 0; i < 3; ++i) {
     fr.n[i] = an[i] * inv_n;
@@ -80,7 +88,7 @@ struct PointFrame {
   cross(fr.n, fr.e1, fr.e2);
   double d[3] = {0, 0, 0};
   for (int a = 0; a < 4; ++a)
-    for (int i = 0; i < 3; ++i) d[i] += kQuad.N[g][a] * (c.xu[a][i] - c.xl[a][i]);
+    for (int i = 0; i < 3; ++i) d[i] += q.N[g][a] * (c.xu[a][i] - c.xl[a][i]);
   u[0] = dot(d, fr.n);
   u[1] = dot(d, fr.e1);
   u[2] = dot(d, fr.e2);
@@ -90,7 +98,9 @@ struct PointFrame {
 
 CohesiveElements::CohesiveElements(const TractionLawParams& params, CohesiveElementsSpec spec, const double* x_ref,
                                    const double* nodal_mass)
-    : law_(make_traction_law(params)), nodes_(std::move(spec.nodes)) {
+    : law_(make_traction_law(params)),
+      quad_(spec.integration == CohesiveIntegration::Gauss ? &kGauss : &kNewtonCotes),
+      nodes_(std::move(spec.nodes)) {
   if (nodes_.size() % 8) throw InputError("cohesive elements: the node list is not a multiple of 8");
   num_elements_ = nodes_.size() / 8;
   const std::size_t ne = num_elements_, np = kPoints * ne;
@@ -119,7 +129,7 @@ CohesiveElements::CohesiveElements(const TractionLawParams& params, CohesiveElem
                              << " m); only zero-thickness elements (coincident lower and upper nodes) are supported");
     for (int g = 0; g < kPoints; ++g) {
       double a1[3], a2[3], an[3];
-      tangents(c, g, a1, a2, an);
+      tangents(*quad_, c, g, a1, a2, an);
       const double area = std::sqrt(dot(an, an));
       if (!(area > 0)) throw InputError(msg() << "cohesive elements: element " << e << " has no area at point " << g);
       point_area_[kPoints * e + g] = area;
@@ -141,7 +151,7 @@ CohesiveElements::CohesiveElements(const TractionLawParams& params, CohesiveElem
   std::vector<double> slot_area(nodes_.size(), 0.0), node_area(gather_node_.size(), 0.0);
   for (std::size_t e = 0; e < ne; ++e)
     for (int a = 0; a < 8; ++a)
-      for (int g = 0; g < kPoints; ++g) slot_area[8 * e + a] += point_area_[kPoints * e + g] * kQuad.N[g][a % 4];
+      for (int g = 0; g < kPoints; ++g) slot_area[8 * e + a] += point_area_[kPoints * e + g] * quad_->N[g][a % 4];
   std::vector<double> area_of_slot(nodes_.size(), 0.0);
   for (std::size_t k = 0; k < gather_node_.size(); ++k) {
     for (Index s = gather_offset_[k]; s < gather_offset_[k + 1]; ++s) node_area[k] += slot_area[gather_slot_[s]];
@@ -169,8 +179,18 @@ double CohesiveElements::element_area(std::size_t e) const {
   return a;
 }
 
-void CohesiveElements::separate_element(std::size_t e) {
-  for (int g = 0; g < kPoints; ++g) damage_[kPoints * e + g] = 1.0;
+void CohesiveElements::point_positions(const double* x, double* out) const {
+  for (std::size_t e = 0; e < num_elements_; ++e) {
+    ElementCoords c;
+    gather(x, &nodes_[8 * e], c);
+    for (int g = 0; g < kPoints; ++g) {
+      double* o = &out[3 * (kPoints * e + g)];
+      for (int i = 0; i < 3; ++i) {
+        o[i] = 0;
+        for (int a = 0; a < 4; ++a) o[i] += quad_->N[g][a] * 0.5 * (c.xl[a][i] + c.xu[a][i]);
+      }
+    }
+  }
 }
 
 // Forces of element e into fe ((8, 3)), its history updated; adds its energies and separated area.
@@ -184,7 +204,7 @@ void CohesiveElements::separate_element(std::size_t e) {
     const std::size_t p = kPoints * e + g;
     PointFrame fr;
     double u[3];
-    point_kinematics(c, g, fr, u);
+    point_kinematics(*quad_, c, g, fr, u);
     PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
     PointResponse r;
     traction_update(law_, u, h, r);
@@ -198,7 +218,7 @@ void CohesiveElements::separate_element(std::size_t e) {
     double traction[3];
     for (int i = 0; i < 3; ++i) traction[i] = area * (t[0] * fr.n[i] + t[1] * fr.e1[i] + t[2] * fr.e2[i]);
     for (int a = 0; a < 4; ++a) {
-      const double w = kQuad.N[g][a];
+      const double w = quad_->N[g][a];
       for (int i = 0; i < 3; ++i) {
         fe[3 * a + i] += w * traction[i];
         fe[3 * (4 + a) + i] -= w * traction[i];
@@ -266,7 +286,7 @@ void CohesiveElements::sample(const double* x, PairSample* out) const {
       const std::size_t p = kPoints * e + g;
       PointFrame fr;
       PairSample& s = out[p];
-      point_kinematics(c, g, fr, s.opening);
+      point_kinematics(*quad_, c, g, fr, s.opening);
       PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
       PointResponse r;
       traction_update(law_, s.opening, h, r);

@@ -1,6 +1,6 @@
 // Zero-thickness 8-node cohesive elements between two plies (the layout of LS-DYNA's *SECTION_SOLID
 // ELFORM 19 with *MAT_138): four lower nodes and the four upper nodes over them, a bilinear quad on
-// the mid-surface with 2 x 2 Gauss points. At each point
+// the mid-surface with 2 x 2 Gauss points or the 4 corner (Newton-Cotes) points. At each point
 //   opening : delta = sum_a N_a (x_upper,a - x_lower,a) (zero thickness: no reference offset, so
 //             rigid translations and rotations of the element open nothing),
 //   frame   : from the current mid-surface x_mid = (x_lower + x_upper) / 2: a_1 = dx_mid/dxi,
@@ -8,7 +8,7 @@
 //             e_1 = a_1 / |a_1|, e_2 = n x e_1; local opening (delta.n, delta.e_1, delta.e_2),
 //   law     : traction_law.hpp (one PointHistory per point; the same law as tiebreak OPTION 9),
 //   force   : f_lower,a += A_g N_a(g) t, f_upper,a -= A_g N_a(g) t with t = t_n n + t_1 e_1 + t_2 e_2
-//             and A_g = |a_1 x a_2| at the reference (Gauss weight 1): tractions per reference area,
+//             and A_g = |a_1 x a_2| at the reference (weight 1 in both rules): tractions per reference area,
 //             as the tiebreak's pairs; the forces sum to zero per point (momentum to round-off).
 //   energy  : elastic = sum A_g e (now); dissipated = running sum of A_g dD; sums per fixed chunk of
 //             elements added in order, so bit-identical for any thread count.
@@ -31,7 +31,14 @@
 
 namespace plyimpact::cohesive {
 
+// Where the law is sampled on the mid-surface (LS-DYNA *MAT_138 INTFAIL > 0: Gauss, <= 0: Newton-Cotes).
+enum class CohesiveIntegration {
+  Gauss,        // 2 x 2 Gauss points at (+-1/sqrt 3, +-1/sqrt 3)
+  NewtonCotes,  // the 4 corners (nodal integration: the tiebreak's quadrature)
+};
+
 struct CohesiveElementsSpec {
+  CohesiveIntegration integration = CohesiveIntegration::Gauss;
   // (num_elements, 8): lower face counter-clockwise seen from the upper ply, then the upper node
   // over each lower node in the same order (LS-DYNA's ELFORM 19 numbering).
   std::vector<Index> nodes;
@@ -39,7 +46,8 @@ struct CohesiveElementsSpec {
 
 class CohesiveElements {
  public:
-  static constexpr int kPoints = 4;  // 2 x 2 Gauss points per element
+  static constexpr int kPoints = 4;  // 2 x 2 Gauss or 4 corner points per element
+  struct QuadTables;                 // shape functions of a rule at its points (defined in the .cpp)
 
   // x_ref: (num_nodes, 3) reference coordinates; nodal_mass: (num_nodes) kg. Throws InputError on a
   // bad law, a node index out of range, an element of non-zero thickness or without area.
@@ -66,8 +74,11 @@ class CohesiveElements {
   double point_area(std::size_t point) const { return point_area_[point]; }  // m^2, A_g
   double element_area(std::size_t e) const;                                // m^2, reference mid-surface
 
-  // Initial history: every point of element e starts separated (a pre-crack).
-  void separate_element(std::size_t e);
+  // Initial history: point p starts separated (a pre-crack).
+  void separate_point(std::size_t point) { damage_[point] = 1.0; }
+
+  // Positions of the points on the mid-surface of configuration x into out ((num_points, 3)).
+  void point_positions(const double* x, double* out) const;
 
   // Per-point output for configuration x into out[0 .. num_points()) (element-major), without
   // changing the state.
@@ -82,6 +93,7 @@ class CohesiveElements {
                       double& separated);
 
   TractionLaw law_;
+  const QuadTables* quad_ = nullptr;  // the integration rule's shape functions at its points
   std::size_t num_elements_ = 0;
   std::vector<Index> nodes_;          // (num_elements, 8)
   std::vector<double> point_area_;    // (num_elements, 4) A_g

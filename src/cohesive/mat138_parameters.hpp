@@ -22,6 +22,9 @@ struct Mat138Params {
   double UND = kMissing;   // m, ultimate normal opening (read only when T is 0 or blank)
   double UTD = kMissing;   // m, ultimate tangential opening (read only when S is 0 or blank)
   double RO = 0;           // kg/m^2, mass per unit mid-surface area (ROFLG = 1); 0: massless
+  // > 0: 2 x 2 Gauss points; <= 0 (LS-DYNA's blank): Newton-Cotes (corner) points. Only the sign is
+  // used: elements are never deleted (a failed point stays as compression-only contact).
+  double INTFAIL = 0;
 };
 
 // The laws' field names as the *MAT_138 card spells them, for validate_traction_law's messages.

@@ -188,8 +188,8 @@ void read_precrack(const Reader& r, const LaminateSpec& lam, InterfaceLawSpec& s
 const std::initializer_list<std::string_view> kLawKeys = {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN",
                                                            "ERATES", "CN",   "CT2CN", "FS", "precrack"};
 // *MAT_138 card fields of `model: cohesive` (RO as mass per unit area: the card's ROFLG = 1).
-const std::initializer_list<std::string_view> kMat138Keys = {"T",  "S",  "XMU", "GIC", "GIIC", "EN",
-                                                             "ET", "UND", "UTD", "RO", "precrack"};
+const std::initializer_list<std::string_view> kMat138Keys = {"T",   "S",   "XMU", "GIC", "GIIC",    "EN",
+                                                             "ET",  "UND", "UTD", "RO",  "INTFAIL", "precrack"};
 
 bool listed(const std::initializer_list<std::string_view>& keys, std::string_view key) {
   return std::find(keys.begin(), keys.end(), key) != keys.end();
@@ -214,6 +214,7 @@ void read_mat138_keys(const Reader& r, cohesive::Mat138Params& p) {
   positive("UTD", u::length, p.UTD);
   non_negative("RO", mass_per_area, p.RO);
   if (r.has("XMU")) p.XMU = r.quantity("XMU", u::dimensionless);
+  if (r.has("INTFAIL")) p.INTFAIL = r.quantity("INTFAIL", u::dimensionless, Limits::interval(-4, false, 4, false, "INTFAIL"));
 }
 
 // Keys of the other model in `r` are refused, naming the model they belong to.
@@ -224,7 +225,7 @@ void refuse_other_model_keys(const Reader& r, bool cohesive) {
     if (listed(other, key) && !listed(own, key))
       item.fail(msg() << "a " << (cohesive ? "tiebreak" : "*MAT_138") << " key with model: "
                       << (cohesive ? "cohesive" : "tiebreak"),
-                cohesive ? "the *MAT_138 keys T, S, XMU, GIC, GIIC, EN, ET, UND, UTD, RO, precrack"
+                cohesive ? "the *MAT_138 keys T, S, XMU, GIC, GIIC, EN, ET, UND, UTD, RO, INTFAIL, precrack"
                          : "the tiebreak keys OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS, precrack");
 }
 
@@ -234,7 +235,8 @@ void refuse_other_model_keys(const Reader& r, bool cohesive) {
 void read_interface_laws(const Reader& r, const std::vector<double>& angles, LaminateSpec& lam) {
   r.require_map("{select: all | angle-change | none | [numbers], model: merged | tiebreak | cohesive, law keys ...}");
   r.allow_keys({"select", "model", "OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "FS",
-                "precrack", "per_interface", "T", "S", "XMU", "GIC", "GIIC", "EN", "ET", "UND", "UTD", "RO"});
+                "precrack", "per_interface", "T", "S", "XMU", "GIC", "GIIC", "EN", "ET", "UND", "UTD", "RO",
+                "INTFAIL"});
   lam.delaminating = read_interfaces(r.at("select", "all, angle-change, none, or a list of interface numbers"), angles);
   lam.interface_law.assign(lam.delaminating.size(), std::nullopt);
   const std::string model =
@@ -268,7 +270,7 @@ void read_interface_laws(const Reader& r, const std::vector<double>& angles, Lam
       if (*end != '\0' || k < 1 || std::size_t(k) > lam.delaminating.size() || !lam.delaminating[std::size_t(k - 1)])
         item.fail(msg() << "interface " << key << " is not a delaminating interface of this laminate",
                   "the number of an interface chosen by select (interface i lies between plies i and i+1)");
-      item.require_map(cohesive ? "a mapping of *MAT_138 keys (T, S, XMU, GIC, GIIC, EN, ET, UND, UTD, RO) and precrack"
+      item.require_map(cohesive ? "a mapping of *MAT_138 keys (T, S, XMU, GIC, GIIC, EN, ET, UND, UTD, RO, INTFAIL) and precrack"
                                 : "a mapping of law keys (OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS) and precrack");
       item.allow_keys(cohesive ? kMat138Keys : kLawKeys);
       overrides.emplace(std::size_t(k - 1), item);

@@ -27,17 +27,19 @@ class SeparatePairs : public StateVisitor {
   const std::vector<char>& separated_;
 };
 
-// Pairs whose lower node lies in the pre-crack region (closed, with a round-off margin).
+// Whether X (x, y) lies in the pre-crack region of `spec` (closed, with a round-off margin).
+bool in_precrack(const config::InterfaceLawSpec& spec, const double* X) {
+  const double tol = 1e-9 * std::max(spec.precrack_x[1], spec.precrack_y[1]);
+  return X[0] >= spec.precrack_x[0] - tol && X[0] <= spec.precrack_x[1] + tol && X[1] >= spec.precrack_y[0] - tol &&
+         X[1] <= spec.precrack_y[1] + tol;
+}
+
+// Pairs whose lower node lies in the pre-crack region.
 std::vector<char> precrack_pairs(const model::Model& model, const model::Interface& itf) {
   std::vector<char> in(itf.num_pairs(), 0);
   const auto& spec = *itf.tiebreak;
   if (!spec.has_precrack) return in;
-  const double tol = 1e-9 * std::max(spec.precrack_x[1], spec.precrack_y[1]);
-  for (std::size_t p = 0; p < in.size(); ++p) {
-    const double* X = &model.X[3 * std::size_t(itf.lower_nodes[p])];
-    in[p] = X[0] >= spec.precrack_x[0] - tol && X[0] <= spec.precrack_x[1] + tol && X[1] >= spec.precrack_y[0] - tol &&
-            X[1] <= spec.precrack_y[1] + tol;
-  }
+  for (std::size_t p = 0; p < in.size(); ++p) in[p] = in_precrack(spec, &model.X[3 * std::size_t(itf.lower_nodes[p])]);
   return in;
 }
 
@@ -69,7 +71,8 @@ bool is_cohesive(const model::Interface& itf) {
 
 std::string mat138_text(const cohesive::Mat138Params& p, const cohesive::TractionLawParams& law) {
   std::ostringstream s;
-  s << "*MAT_138 cohesive elements (8-node, 2x2 Gauss points; the OPTION 9 law), EN " << p.EN * 1e-12
+  s << "*MAT_138 cohesive elements (8-node, " << (p.INTFAIL > 0 ? "2x2 Gauss" : "4 Newton-Cotes (corner)")
+    << " points; the OPTION 9 law), EN " << p.EN * 1e-12
     << " kN/mm^3, ET " << p.ET * 1e-12 << " kN/mm^3, T " << law.NFLS * 1e-6 << " MPa, S " << law.SFLS * 1e-6
     << " MPa, GIC " << p.GIC << " J/m^2, GIIC " << p.GIIC << " J/m^2, XMU " << p.XMU;
   if (p.RO > 0) s << ", RO " << p.RO << " kg/m^2";
@@ -80,21 +83,25 @@ std::string mat138_text(const cohesive::Mat138Params& p, const cohesive::Tractio
 
 cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, const model::Interface& itf) {
   const std::vector<Index> faces = cohesive::pair_faces_from_segments(itf.lower_nodes, itf.lower_segments);
-  const std::vector<char> in_precrack = precrack_pairs(model, itf);
   cohesive::CohesiveElementsSpec spec;
+  spec.integration = itf.tiebreak->mat138.INTFAIL > 0 ? cohesive::CohesiveIntegration::Gauss
+                                                      : cohesive::CohesiveIntegration::NewtonCotes;
   const std::size_t ne = faces.size() / 4;
   spec.nodes.resize(8 * ne);
-  std::vector<char> separated(ne, 0);
   for (std::size_t e = 0; e < ne; ++e)
     for (int a = 0; a < 4; ++a) {
       const Index pair = faces[4 * e + a];
       spec.nodes[8 * e + a] = itf.lower_nodes[pair];
       spec.nodes[8 * e + 4 + a] = itf.upper_nodes[pair];
-      if (in_precrack[pair]) separated[e] = 1;
     }
   cohesive::CohesiveElements elements(itf.tiebreak->law, std::move(spec), model.X.data(), model.mass.data());
-  for (std::size_t e = 0; e < ne; ++e)
-    if (separated[e]) elements.separate_element(e);
+  const auto& law = *itf.tiebreak;
+  if (law.has_precrack) {
+    std::vector<double> at(3 * elements.num_points());
+    elements.point_positions(model.X.data(), at.data());
+    for (std::size_t p = 0; p < elements.num_points(); ++p)
+      if (in_precrack(law, &at[3 * p])) elements.separate_point(p);
+  }
   return elements;
 }
 

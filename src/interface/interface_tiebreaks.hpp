@@ -60,9 +60,9 @@ class InterfaceTiebreaks : public solver::ForceContributor {
 cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const model::Interface& itf);
 
 // The *MAT_138 elements of one `model: cohesive` interface: one per interface segment (lower face from
-// the lower segment, upper face from the partner nodes), its law, and its pre-crack: an element whose
-// lower nodes include one in the region starts separated, so the same nodes are free as with the
-// tiebreak's rule (pairs in the region start separated).
+// the lower segment, upper face from the partner nodes), its law and integration rule (INTFAIL), and
+// its pre-crack: the points whose reference position lies in the region start separated (the
+// tiebreak's rule for its pairs; with corner points the two rules coincide).
 cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, const model::Interface& itf);
 
 }  // namespace plyimpact::interface

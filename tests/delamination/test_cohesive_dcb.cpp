@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -42,16 +43,20 @@
 namespace plyimpact {
 namespace {
 
-constexpr double kRamp = 0.6e-3, kEnd = 2.5e-3;  // s
+constexpr double kRamp = 0.6e-3, kEnd = 2.0e-3;  // s
 constexpr double kOpeningRate = 0.7;              // m/s per arm (test_dcb.cpp says why)
 constexpr double kWindow = 0.1e-3;                // s, load averaging window (test_dcb.cpp)
 
 const char* kTiebreak =
     "{select: [1], model: tiebreak, OPTION: 9, NFLS: 20 MPa, SFLS: 20 MPa, ERATEN: 200 J/m^2,\n"
     "               ERATES: 400 J/m^2, PARAM: 1, CN: 100 kN/mm^3, CT2CN: 1, precrack: {x: [0, 25]}}";
+// INTFAIL blank (0): Newton-Cotes points, LS-DYNA's reading of a blank field; INTFAIL 1: 2 x 2 Gauss.
 const char* kCohesive =
     "{select: [1], model: cohesive, T: 20 MPa, S: 20 MPa, GIC: 200 J/m^2, GIIC: 400 J/m^2,\n"
     "               XMU: 1, EN: 100 kN/mm^3, ET: 100 kN/mm^3, precrack: {x: [0, 25]}}";
+const char* kCohesiveGauss =
+    "{select: [1], model: cohesive, T: 20 MPa, S: 20 MPa, GIC: 200 J/m^2, GIIC: 400 J/m^2,\n"
+    "               XMU: 1, EN: 100 kN/mm^3, ET: 100 kN/mm^3, INTFAIL: 1, precrack: {x: [0, 25]}}";
 
 std::string dcb_scene(const char* interfaces) {
   std::ostringstream y;
@@ -160,60 +165,94 @@ double load_at(const Curve& c, double opening) {
   return c.load[k - 1] + w * (c.load[k] - c.load[k - 1]);
 }
 
-TEST(CohesiveDCB, Option9AndMat138AgreeOnTheLoadOpeningCurve) {
-  const Curve tb = run_dcb(kTiebreak);
-  const Curve ce = run_dcb(kCohesive);
-  double peak_tb = 0, peak_ce = 0, open_tb = 0, open_ce = 0;
-  for (std::size_t i = 0; i < tb.load.size(); ++i)
-    if (tb.load[i] > peak_tb) {
-      peak_tb = tb.load[i];
-      open_tb = tb.opening[i];
+double peak_of(const Curve& c, double* at = nullptr) {
+  double peak = 0;
+  for (std::size_t i = 0; i < c.load.size(); ++i)
+    if (c.load[i] > peak) {
+      peak = c.load[i];
+      if (at) *at = c.opening[i];
     }
-  for (std::size_t i = 0; i < ce.load.size(); ++i)
-    if (ce.load[i] > peak_ce) {
-      peak_ce = ce.load[i];
-      open_ce = ce.opening[i];
-    }
-  double max_diff = 0, at = 0, rms = 0;
+  return peak;
+}
+
+// Largest and rms difference of `other` from `ref` at ref's openings up to `until`, relative to ref's
+// peak load, from 20 % of that peak on the rising branch.
+struct Difference {
+  double max = 0, rms = 0, at = 0;
+};
+Difference difference(const Curve& ref, const Curve& other, double until) {
+  const double peak = peak_of(ref);
+  Difference d;
   std::size_t n = 0;
   bool rising = false;
-  for (std::size_t i = 0; i < tb.load.size(); ++i) {
-    if (tb.load[i] > 0.2 * peak_tb) rising = true;
-    if (!rising || tb.opening[i] > ce.opening.back()) continue;
-    const double diff = std::abs(load_at(ce, tb.opening[i]) - tb.load[i]) / peak_tb;
-    rms += diff * diff;
+  for (std::size_t i = 0; i < ref.load.size(); ++i) {
+    if (ref.load[i] > 0.2 * peak) rising = true;
+    if (!rising || ref.opening[i] > std::min(until, other.opening.back())) continue;
+    const double diff = std::abs(load_at(other, ref.opening[i]) - ref.load[i]) / peak;
+    d.rms += diff * diff;
     ++n;
-    if (diff > max_diff) {
-      max_diff = diff;
-      at = tb.opening[i];
+    if (diff > d.max) {
+      d.max = diff;
+      d.at = ref.opening[i];
     }
   }
-  rms = std::sqrt(rms / double(std::max<std::size_t>(n, 1)));
-  const double end_tb = tb.load.back(), end_ce = load_at(ce, tb.opening.back());
-  std::printf("tiebreak OPTION 9: %ld cycles, %.2f s; peak %.5g N at %.4g mm; final %.5g N; delaminated %.4g mm^2 "
-              "(pre-crack %.4g); dissipated %.4g mJ; max |ratio - 1| %.2e\n",
-              tb.cycles, tb.wall, peak_tb, open_tb * 1e3, end_tb, tb.final_area * 1e6, tb.precrack_area * 1e6,
-              tb.dissipated * 1e3, tb.max_ratio_err);
-  std::printf("*MAT_138 elements: %ld cycles, %.2f s; peak %.5g N at %.4g mm; final %.5g N; delaminated %.4g mm^2 "
-              "(pre-crack %.4g); dissipated %.4g mJ; max |ratio - 1| %.2e\n",
-              ce.cycles, ce.wall, peak_ce, open_ce * 1e3, end_ce, ce.final_area * 1e6, ce.precrack_area * 1e6,
-              ce.dissipated * 1e3, ce.max_ratio_err);
-  std::printf("load difference / tiebreak peak: max %.2f %% at %.4g mm, rms %.2f %%; peak %+.2f %%, final %+.2f %%\n",
-              100 * max_diff, at * 1e3, 100 * rms, 100 * (peak_ce / peak_tb - 1), 100 * (end_ce / end_tb - 1));
+  d.rms = std::sqrt(d.rms / double(std::max<std::size_t>(n, 1)));
+  return d;
+}
 
-  EXPECT_LT(max_diff, 0.02) << "the issue's 2 % on the load-opening curve";
-  EXPECT_LT(ce.max_ratio_err, 0.01);
-  EXPECT_GT(ce.final_area, ce.precrack_area + 5 * 2e-3 * 1e-3) << "the crack grew by several segments";
-  // The same nodes start free: the element rule's pre-crack covers whole segments up to the first
-  // node past the region, the pairs' tributary strips end half a segment before it.
-  EXPECT_NEAR(ce.precrack_area, tb.precrack_area + 0.5e-3 * 2e-3, 1e-12);
+void print(const char* name, const Curve& c) {
+  double at = 0;
+  const double peak = peak_of(c, &at);
+  std::printf("%-28s %ld cycles, %.2f s; peak %.5g N at %.4g mm; final %.5g N at %.4g mm; delaminated %.4g mm^2 "
+              "(pre-crack %.4g); dissipated %.4g mJ; max |ratio - 1| %.2e\n",
+              name, c.cycles, c.wall, peak, at * 1e3, c.load.back(), c.opening.back() * 1e3, c.final_area * 1e6,
+              c.precrack_area * 1e6, c.dissipated * 1e3, c.max_ratio_err);
+}
+
+TEST(CohesiveDCB, Option9AndMat138AgreeOnTheLoadOpeningCurve) {
+  const Curve tb = run_dcb(kTiebreak);
+  const Curve nc = run_dcb(kCohesive);
+  const Curve ga = run_dcb(kCohesiveGauss);
+  print("tiebreak OPTION 9:", tb);
+  print("*MAT_138 Newton-Cotes:", nc);
+  print("*MAT_138 2x2 Gauss:", ga);
+  const double end = tb.opening.back();
+  const Difference d_nc = difference(tb, nc, end), d_ga = difference(tb, ga, end);
+  // The elastic branch: up to 40 % of the peak load no point of the interface is damaged yet.
+  double elastic_end = 0;
+  for (std::size_t i = 0; i < tb.load.size() && tb.load[i] < 0.4 * peak_of(tb); ++i) elastic_end = tb.opening[i];
+  const Difference e_ga = difference(tb, ga, elastic_end);
+  std::printf("load difference from the tiebreak / its peak: Newton-Cotes max %.2f %% at %.4g mm, rms %.2f %%; "
+              "Gauss max %.2f %% at %.4g mm, rms %.2f %%, elastic branch (to %.3g mm) max %.2f %%; peaks %+.2f %% "
+              "and %+.2f %%\n",
+              100 * d_nc.max, d_nc.at * 1e3, 100 * d_nc.rms, 100 * d_ga.max, d_ga.at * 1e3, 100 * d_ga.rms,
+              elastic_end * 1e3, 100 * e_ga.max, 100 * (peak_of(nc) / peak_of(tb) - 1),
+              100 * (peak_of(ga) / peak_of(tb) - 1));
+  if (std::getenv("DCB_DUMP"))
+    for (double o = 0.1e-3; o < end; o += 0.1e-3)
+      std::printf("  opening %.2f mm: tiebreak %.4f N, Newton-Cotes %.4f N, Gauss %.4f N\n", o * 1e3, load_at(tb, o),
+                  load_at(nc, o), load_at(ga, o));
+
+  EXPECT_LT(d_nc.max, 0.02) << "the issue's 2 % on the load-opening curve (same quadrature as the pairs)";
+  // Gauss points sample the same law between the nodes: before any damage the two interfaces are
+  // both stiff ties (their own compliance below 0.1 % of the arms'), so the curves agree to the
+  // 0.5 % the load averaging leaves; beyond, see the header (reported, not asserted).
+  EXPECT_LT(e_ga.max, 0.01) << "elastic branch with Gauss points";
+  for (const Curve* c : {&nc, &ga}) {
+    EXPECT_LT(c->max_ratio_err, 0.01);
+    EXPECT_GT(c->final_area, c->precrack_area + 5 * 2e-3 * 1e-3) << "the crack grew by several segments";
+  }
+  // Pre-crack: the points in the region start separated. Corner points are the pairs' nodes (25.5 mm
+  // of strips); the Gauss points of the segments up to x = 25 mm lie in it, those of the next one not.
+  EXPECT_NEAR(nc.precrack_area, tb.precrack_area, 1e-12);
+  EXPECT_NEAR(ga.precrack_area, 25e-3 * 2e-3, 1e-12);
 }
 
 // Restart through the propagation with *MAT_138 elements: the per-point history and the dissipated
 // energy are run state; a run written after the damage zone formed and read into a fresh solver
 // continues bit for bit as the uninterrupted one.
 TEST(CohesiveDCB, RestartDuringPropagationIsBitIdentical) {
-  const config::Scene scene = config::load_scene_from_string(dcb_scene(kCohesive), "dcb.yaml");
+  const config::Scene scene = config::load_scene_from_string(dcb_scene(kCohesiveGauss), "dcb.yaml");
   const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
   const auto damaged = [](const solver::Solver& s) {
     std::size_t n = 0;
@@ -221,7 +260,7 @@ TEST(CohesiveDCB, RestartDuringPropagationIsBitIdentical) {
     return n;
   };
   solver::Solver a(model);
-  while (a.state().time < 1.3e-3) a.step();
+  while (a.state().time < 1.0e-3) a.step();
   ASSERT_GT(damaged(a), 0u);
   std::stringstream file;
   StateWriter writer(file);

@@ -1,4 +1,5 @@
-// One *MAT_138 cohesive element (8 nodes, zero thickness, 2 x 2 Gauss points) driven by prescribed
+// One *MAT_138 cohesive element (8 nodes, zero thickness; 2 x 2 Gauss points, and where it matters
+// also the 4 Newton-Cotes corner points) driven by prescribed
 // motions of its upper face, the lower face fixed. The test reads only the nodal forces the element
 // returns: the traction is minus the upper face's force over the area, the work is the trapezoid
 // integral of that traction over the imposed opening. Independent answers:
@@ -51,12 +52,12 @@ Mat138Params table_8_6() {
 struct OneElement {
   std::vector<double> X, x, f, mass;
   CohesiveElements elements;
-  explicit OneElement(const Mat138Params& p)
+  explicit OneElement(const Mat138Params& p, CohesiveIntegration rule = CohesiveIntegration::Gauss)
       : X{0, 0, 0, L, 0, 0, L, L, 0, 0, L, 0, 0, 0, 0, L, 0, 0, L, L, 0, 0, L, 0},
         x(X),
         f(24, 0.0),
         mass(8, 1e-6),
-        elements(traction_law_of(p), CohesiveElementsSpec{{0, 1, 2, 3, 4, 5, 6, 7}}, X.data(), mass.data()) {}
+        elements(traction_law_of(p), CohesiveElementsSpec{rule, {0, 1, 2, 3, 4, 5, 6, 7}}, X.data(), mass.data()) {}
   // Upper face displaced uniformly by d (global), lower face at rest; returns the traction on the
   // interface (minus the upper face's force per area).
   void open(const double d[3], double t[3]) {
@@ -96,12 +97,13 @@ TEST(CohesiveElement, PureModesFollowTheLawAndDissipateTheToughness) {
   const Mode modes[] = {{"mode I", {0, 0, 1}, p.T, p.EN, p.GIC},
                         {"mode II (x)", {1, 0, 0}, p.S, p.ET, p.GIIC},
                         {"mode II (diagonal)", {std::sqrt(0.5), std::sqrt(0.5), 0}, p.S, p.ET, p.GIIC}};
+  for (const auto rule : {CohesiveIntegration::Gauss, CohesiveIntegration::NewtonCotes})
   for (const auto& m : modes) {
-    OneElement e(p);
+    OneElement e(p, rule);
     const double onset = m.strength / m.stiffness, fin = 2 * m.g / m.strength;
     // Traction at points of the ascending and softening branches against the bilinear closed form.
     for (double frac : {0.5, 1.0, 1.5, 0.5 * (1 + fin / onset), 0.99 * fin / onset}) {
-      OneElement probe(p);
+      OneElement probe(p, rule);
       const double open = frac * onset;
       double t[3];
       for (int s = 1; s <= 50; ++s) {
@@ -193,8 +195,9 @@ void rigid(const std::vector<double>& X, double angle, const double c[3], std::v
 TEST(CohesiveElement, RigidMotionsProduceNoForce) {
   const Mat138Params p = table_8_6();
   const double force_scale = p.T * L * L;
+  for (const auto rule : {CohesiveIntegration::Gauss, CohesiveIntegration::NewtonCotes})
   for (double pre_damage_frac : {0.0, 0.6}) {  // undamaged and partly damaged
-    OneElement e(p);
+    OneElement e(p, rule);
     if (pre_damage_frac > 0) {
       const double dir[3] = {0.6, 0, 0.8};
       work_along_ray(e, dir, pre_damage_frac * 2 * p.GIC / p.T, 100);
@@ -260,13 +263,15 @@ TEST(CohesiveElement, HingeOpeningIntegratesExactly) {
 }
 
 // The stable step: with mass m on each of the 8 nodes, the uniform opening is the stiffest mode (its
-// eigenvalue is the row sum K A/4 of the consistent interface stiffness, all of whose entries are
-// positive: Gershgorin), omega^2 = K (A/4) (1/m + 1/m), which is the reported step's estimate.
+// eigenvalue is the row sum K A/4 of the interface stiffness, all of whose entries are positive:
+// Gershgorin; with corner points the stiffness is diagonal), omega^2 = K (A/4) (1/m + 1/m), which
+// is the reported step's estimate.
 // Central difference is stable for dt < 2/omega: run just below and just above the reported step.
 TEST(CohesiveElement, StableStepIsTheCentralDifferenceLimit) {
   const Mat138Params p = table_8_6();
+  for (const auto rule : {CohesiveIntegration::Gauss, CohesiveIntegration::NewtonCotes})
   for (double factor : {0.98, 1.02}) {
-    OneElement e(p);
+    OneElement e(p, rule);
     const double dt = factor * e.elements.stable_step();
     std::vector<double> v(24, 0.0);
     for (int a = 4; a < 8; ++a) e.x[3 * a + 2] = 1e-3 * p.T / p.EN;  // small elastic opening
