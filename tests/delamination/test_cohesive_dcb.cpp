@@ -1,24 +1,25 @@
-// The double cantilever beam of test_dcb.cpp run twice through the whole chain (scene, mesher, model
-// builder, interface contributor, explicit solver): once with tiebreak OPTION 9 pairs and once with
-// *MAT_138 cohesive elements with the same constants (EN = CN, ET = CT2CN CN, T = NFLS, S = SFLS,
-// GIC = ERATEN, GIIC = ERATES, XMU = PARAM) and the same pre-crack region.
+// The double cantilever beam of test_dcb.cpp run three times through the whole chain (scene, mesher,
+// model builder, interface contributor, explicit solver): with tiebreak OPTION 9 pairs, and with
+// *MAT_138 cohesive elements of the same constants (EN = CN, ET = CT2CN CN, T = NFLS, S = SFLS,
+// GIC = ERATEN, GIIC = ERATES, XMU = PARAM) integrated at corner points and at Gauss points.
 //
-// Why the two should agree: both apply the same point law (cohesive/traction_law.hpp) to the same
+// Why they should agree: both apply the same point law (cohesive/traction_law.hpp) to the same
 // opening field of the same mesh. The tiebreak integrates it at the nodes (each pair carries its
-// tributary area: nodal, trapezoidal quadrature), the element at the 2 x 2 Gauss points of each
-// segment. The arms' compliance is the same; the interface's own compliance (opening NFLS/CN =
-// 0.2 um at the peak against an arm opening of 1.2 mm) is negligible in both, so before the crack
-// moves they differ only by round-off. The pre-crack frees the same nodes (the element rule frees
-// the elements with a node in the region, the tiebreak the pairs in it). During propagation both
-// dissipate G_Ic per unit area (test_cohesive_element) and the load follows G_I = G_Ic; what
-// differs is how the cohesive zone (about 4 segments long here) is sampled: 2 points per segment
-// instead of 1 node, so the damage front advances in half-segment steps instead of one-segment
-// steps. One segment changes the load on the propagation branch by 1/27.6 = 3.6 % (test_dcb.cpp);
-// both curves are the mean over 0.1 ms, which averages the front's jumps. The issue asks for 2 %.
-// We compare the cohesive load at the tiebreak's openings, relative to the tiebreak's peak load,
-// from 20 % of that peak on the rising branch to the end of the run.
+// tributary area), which is exactly what the element does with Newton-Cotes (corner) points, INTFAIL
+// blank as LS-DYNA reads it: each corner point carries a quarter of its segment, the points of the
+// segments around a node see that node's opening, and the interface is flat by the DCB's symmetry,
+// so the frames agree. The two curves then agree to round-off, well inside the issue's 2 %.
+// With 2 x 2 Gauss points (INTFAIL > 0) the law is sampled between the nodes and the points of a
+// segment couple its nodes. Before damage both interfaces are stiff ties (their compliance, NFLS/CN
+// = 0.2 um at the peak against an arm opening of 1.2 mm, is negligible), so with the same nodes free
+// the elastic branches agree. Once the cohesive zone (about 4 segments) forms, the Gauss points
+// near the tip see the opening interpolated from two nodes, the tip node can open further while its
+// neighbour closes (Schellekens & de Borst 1993 on the traction oscillations of Gauss-integrated
+// stiff interfaces), and damage starts earlier: a lower peak and a different propagation branch at
+// this mesh. That difference is printed and documented, not asserted. We compare the loads at the
+// tiebreak's openings, relative to its peak, from 20 % of the peak on the rising branch on.
 //
-// Also: the cohesive run's energy ratio stays within 1 +- 0.01 through the propagation (as in
+// Also: the cohesive runs' energy ratio stays within 1 +- 0.01 through the propagation (as in
 // test_dcb.cpp: from the moment the external work reaches 5 % of the strain energy at the critical
 // opening); the delaminated area grows; a restart through visit_state continues bit for bit.
 #include <gtest/gtest.h>
@@ -54,9 +55,13 @@ const char* kTiebreak =
 const char* kCohesive =
     "{select: [1], model: cohesive, T: 20 MPa, S: 20 MPa, GIC: 200 J/m^2, GIIC: 400 J/m^2,\n"
     "               XMU: 1, EN: 100 kN/mm^3, ET: 100 kN/mm^3, precrack: {x: [0, 25]}}";
+// Gauss points with the pre-crack reaching past the segment [25, 26] mm's points (25.21, 25.79): then the
+// same nodes are free as with the pairs (x <= 25 mm). With the pairs' region, x <= 25 mm, the points
+// of that segment stay bonded and tie the node at 25 mm through the segment's interpolation: a crack
+// one node shorter (docs/delamination.md gives the figures of that run).
 const char* kCohesiveGauss =
     "{select: [1], model: cohesive, T: 20 MPa, S: 20 MPa, GIC: 200 J/m^2, GIIC: 400 J/m^2,\n"
-    "               XMU: 1, EN: 100 kN/mm^3, ET: 100 kN/mm^3, INTFAIL: 1, precrack: {x: [0, 25]}}";
+    "               XMU: 1, EN: 100 kN/mm^3, ET: 100 kN/mm^3, INTFAIL: 1, precrack: {x: [0, 25.8]}}";
 
 std::string dcb_scene(const char* interfaces) {
   std::ostringstream y;
@@ -234,18 +239,22 @@ TEST(CohesiveDCB, Option9AndMat138AgreeOnTheLoadOpeningCurve) {
                   load_at(nc, o), load_at(ga, o));
 
   EXPECT_LT(d_nc.max, 0.02) << "the issue's 2 % on the load-opening curve (same quadrature as the pairs)";
-  // Gauss points sample the same law between the nodes: before any damage the two interfaces are
-  // both stiff ties (their own compliance below 0.1 % of the arms'), so the curves agree to the
-  // 0.5 % the load averaging leaves; beyond, see the header (reported, not asserted).
+  // Gauss points: before any damage both interfaces are stiff ties on the same free nodes (their
+  // own compliance below 0.1 % of the arms'), so the elastic branches agree to 1 %; beyond, the Gauss
+  // rule's tip behaviour differs (header; measured and reported, not asserted).
   EXPECT_LT(e_ga.max, 0.01) << "elastic branch with Gauss points";
   for (const Curve* c : {&nc, &ga}) {
     EXPECT_LT(c->max_ratio_err, 0.01);
     EXPECT_GT(c->final_area, c->precrack_area + 5 * 2e-3 * 1e-3) << "the crack grew by several segments";
   }
   // Pre-crack: the points in the region start separated. Corner points are the pairs' nodes (25.5 mm
-  // of strips); the Gauss points of the segments up to x = 25 mm lie in it, those of the next one not.
+  // of strips); the Gauss points of the segments up to x = 26 mm lie in x <= 25.8 mm.
   EXPECT_NEAR(nc.precrack_area, tb.precrack_area, 1e-12);
-  EXPECT_NEAR(ga.precrack_area, 25e-3 * 2e-3, 1e-12);
+  EXPECT_NEAR(ga.precrack_area, 26e-3 * 2e-3, 1e-12);
+  // Every point that separated dissipated its G_c (pure mode I here: GIC = 200 J/m^2; points still
+  // softening add more), so the dissipation is at least GIC times the grown area.
+  for (const Curve* c : {&tb, &nc, &ga})
+    EXPECT_GE(c->dissipated, GIc * (c->final_area - c->precrack_area) * (1 - 1e-6));
 }
 
 // Restart through the propagation with *MAT_138 elements: the per-point history and the dissipated
@@ -260,7 +269,7 @@ TEST(CohesiveDCB, RestartDuringPropagationIsBitIdentical) {
     return n;
   };
   solver::Solver a(model);
-  while (a.state().time < 1.0e-3) a.step();
+  while (a.state().time < 1.0e-3) a.step();  // opening ~1 mm: a damage zone at the tip
   ASSERT_GT(damaged(a), 0u);
   std::stringstream file;
   StateWriter writer(file);
@@ -268,7 +277,7 @@ TEST(CohesiveDCB, RestartDuringPropagationIsBitIdentical) {
   solver::Solver b(model);
   StateReader reader(file, "memory");
   b.visit_state(reader);
-  for (int i = 0; i < 2000; ++i) {
+  for (int i = 0; i < 1000; ++i) {
     a.step();
     b.step();
   }
