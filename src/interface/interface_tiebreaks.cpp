@@ -54,7 +54,9 @@ const char* option_name(cohesive::TiebreakOption o) {
   return "";
 }
 
-std::string law_text(const cohesive::TractionLawParams& p) {
+}  // namespace
+
+std::string tiebreak_law_text(const cohesive::TractionLawParams& p) {
   std::ostringstream s;
   s << option_name(p.option) << ", NFLS " << p.NFLS * 1e-6 << " MPa, SFLS " << p.SFLS * 1e-6 << " MPa";
   if (p.option != cohesive::TiebreakOption::StressCcrit)
@@ -64,6 +66,8 @@ std::string law_text(const cohesive::TractionLawParams& p) {
   if (p.option == cohesive::TiebreakOption::MixedMode) s << ", CT2CN " << p.CT2CN;
   return s.str();
 }
+
+namespace {
 
 bool is_cohesive(const model::Interface& itf) {
   return itf.tiebreak && itf.tiebreak->model == config::InterfaceLawSpec::Model::Cohesive;
@@ -150,7 +154,7 @@ model::Subsystem InterfaceTiebreaks::describe(const model::Model& model) {
       step = kernel.stable_step();
     } else {
       const cohesive::TiebreakPairs kernel = make_interface_pairs(model, itf);
-      law = law_text(itf.tiebreak->law);
+      law = tiebreak_law_text(itf.tiebreak->law);
       for (std::size_t p = 0; p < kernel.size(); ++p)
         if (kernel.damage()[p] >= 1) precrack += kernel.area(p);
       step = kernel.stable_step();

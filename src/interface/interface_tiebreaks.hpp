@@ -11,6 +11,7 @@
 // one per interface segment) instead of pairs; they report under the same energies and columns.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "cohesive/cohesive_elements.hpp"
@@ -64,5 +65,8 @@ cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const mo
 // its pre-crack: the points whose reference position lies in the region start separated (the
 // tiebreak's rule for its pairs; with corner points the two rules coincide).
 cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, const model::Interface& itf);
+
+// One line naming the law and its card values ("OPTION 9 (bilinear mixed mode), NFLS 60 MPa, ...").
+std::string tiebreak_law_text(const cohesive::TractionLawParams& p);
 
 }  // namespace plyimpact::interface
