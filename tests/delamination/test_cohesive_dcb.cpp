@@ -26,7 +26,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -233,10 +232,6 @@ TEST(CohesiveDCB, Option9AndMat138AgreeOnTheLoadOpeningCurve) {
               100 * d_nc.max, d_nc.at * 1e3, 100 * d_nc.rms, 100 * d_ga.max, d_ga.at * 1e3, 100 * d_ga.rms,
               elastic_end * 1e3, 100 * e_ga.max, 100 * (peak_of(nc) / peak_of(tb) - 1),
               100 * (peak_of(ga) / peak_of(tb) - 1));
-  if (std::getenv("DCB_DUMP"))
-    for (double o = 0.1e-3; o < end; o += 0.1e-3)
-      std::printf("  opening %.2f mm: tiebreak %.4f N, Newton-Cotes %.4f N, Gauss %.4f N\n", o * 1e3, load_at(tb, o),
-                  load_at(nc, o), load_at(ga, o));
 
   EXPECT_LT(d_nc.max, 0.02) << "the issue's 2 % on the load-opening curve (same quadrature as the pairs)";
   // Gauss points: before any damage both interfaces are stiff ties on the same free nodes (their
