@@ -79,8 +79,10 @@ void print_mesher_extras(const model::Model& m, std::ostream& out) {
     out << "  interface " << i.id << " (plies " << i.lower_ply + 1 << "/" << i.upper_ply + 1 << ", z = " << i.z
         << " m): " << i.lower_nodes.size() << " coincident node pairs, " << i.lower_segments.size() / 4
         << " segment pairs; "
-        << (i.tiebreak ? "delaminating (tiebreak law, see the delamination subsystem)"
-                       : "merged (model: merged): the plies are bonded here")
+        << (!i.tiebreak ? "merged (model: merged): the plies are bonded here"
+            : i.tiebreak->model == config::InterfaceLawSpec::Model::Cohesive
+                ? "delaminating (*MAT_138 cohesive elements, see the delamination subsystem)"
+                : "delaminating (tiebreak law, see the delamination subsystem)")
         << "\n";
   if (m.impactor && m.impactor_quads.empty()) {
     const auto& imp = *m.impactor;

@@ -38,27 +38,27 @@ void require_softening(std::vector<std::string>& out, const char* mode, const ch
 
 }  // namespace
 
-std::vector<std::string> validate_traction_law(const TractionLawParams& p) {
+std::vector<std::string> validate_traction_law(const TractionLawParams& p, const LawFieldNames& nm) {
   std::vector<std::string> out;
   const auto o = p.option;
   if (o != TiebreakOption::StressCcrit && o != TiebreakOption::DiscreteCrack && o != TiebreakOption::MixedMode) {
     out.push_back(msg() << "OPTION " << int(o) << " is not implemented (allowed: 6, 7, 9)");
     return out;
   }
-  const bool nfls = require_positive(out, "NFLS", p.NFLS, "Pa");
-  const bool sfls = require_positive(out, "SFLS", p.SFLS, "Pa");
-  const bool cn = require_positive(out, "CN", p.CN, "Pa/m");
+  const bool nfls = require_positive(out, nm.NFLS, p.NFLS, "Pa");
+  const bool sfls = require_positive(out, nm.SFLS, p.SFLS, "Pa");
+  const bool cn = require_positive(out, nm.CN, p.CN, "Pa/m");
   bool gic = true, giic = true;
   if (uses_energy(o)) {
-    gic = require_positive(out, "ERATEN", p.ERATEN, "J/m^2");
-    giic = require_positive(out, "ERATES", p.ERATES, "J/m^2");
+    gic = require_positive(out, nm.ERATEN, p.ERATEN, "J/m^2");
+    giic = require_positive(out, nm.ERATES, p.ERATES, "J/m^2");
   }
   bool ct2cn = true;
-  if (o == TiebreakOption::MixedMode) ct2cn = require_positive(out, "CT2CN", p.CT2CN, "(ratio)");
+  if (o == TiebreakOption::MixedMode) ct2cn = require_positive(out, nm.CT2CN, p.CT2CN, "(ratio)");
   if (!(p.FS >= 0) || !std::isfinite(p.FS)) out.push_back(msg() << "FS must be >= 0 (got " << p.FS << ")");
 
   const double kt = o == TiebreakOption::MixedMode ? p.CT2CN * p.CN : p.CN;
-  const char* kt_name = o == TiebreakOption::MixedMode ? "(CT2CN CN)" : "CN";
+  const char* kt_name = o == TiebreakOption::MixedMode ? nm.shear_stiffness : nm.CN;
   switch (o) {
     case TiebreakOption::StressCcrit: {
       if (!require_positive(out, "PARAM (CCRIT)", p.PARAM, "m")) break;
@@ -77,13 +77,13 @@ std::vector<std::string> validate_traction_law(const TractionLawParams& p) {
       break;
     case TiebreakOption::MixedMode:
       if (!std::isnan(p.PARAM) && (p.PARAM == 0 || !std::isfinite(p.PARAM)))
-        out.push_back(msg() << "PARAM must be > 0 (power-law exponent) or < 0 (Benzeggagh-Kenane, eta = |PARAM|); got "
-                            << p.PARAM);
+        out.push_back(msg() << nm.PARAM << " must be > 0 (power-law exponent) or < 0 (Benzeggagh-Kenane, eta = |"
+                            << nm.PARAM << "|); got " << p.PARAM);
       break;
   }
   if (uses_energy(o) && cn && ct2cn) {
-    if (nfls && gic) require_softening(out, "mode I", "NFLS", p.NFLS, "CN", p.CN, "ERATEN", p.ERATEN);
-    if (sfls && giic) require_softening(out, "mode II", "SFLS", p.SFLS, kt_name, kt, "ERATES", p.ERATES);
+    if (nfls && gic) require_softening(out, "mode I", nm.NFLS, p.NFLS, nm.CN, p.CN, nm.ERATEN, p.ERATEN);
+    if (sfls && giic) require_softening(out, "mode II", nm.SFLS, p.SFLS, kt_name, kt, nm.ERATES, p.ERATES);
   }
   return out;
 }

@@ -33,9 +33,22 @@ struct TractionLawParams {
   double FS = 0.0;           // Coulomb coefficient after separation (OPTION 6, 9; OPTION 7 uses tan(PARAM))
 };
 
+// The card names the messages use for the fields of TractionLawParams: the tiebreak's by default;
+// *MAT_138 (mat138_parameters.hpp) reads the same law under its own names.
+struct LawFieldNames {
+  const char* NFLS = "NFLS";
+  const char* SFLS = "SFLS";
+  const char* PARAM = "PARAM";
+  const char* ERATEN = "ERATEN";
+  const char* ERATES = "ERATES";
+  const char* CN = "CN";
+  const char* CT2CN = "CT2CN";
+  const char* shear_stiffness = "(CT2CN CN)";  // K_t of OPTION 9
+};
+
 // Every problem with the parameters, one message each, naming the card field, its unit and the
 // numbers; empty when the law is usable. The scene loader prefixes file:line:col and the key.
-std::vector<std::string> validate_traction_law(const TractionLawParams& p);
+std::vector<std::string> validate_traction_law(const TractionLawParams& p, const LawFieldNames& names = {});
 
 // Throws InputError("<where>: <first problem>; <second> ...") when validate_traction_law finds any.
 void require_valid_traction_law(const TractionLawParams& p, const std::string& where);

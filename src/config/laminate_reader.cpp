@@ -190,27 +190,79 @@ void read_precrack(const Reader& r, const LaminateSpec& lam, InterfaceLawSpec& s
 
 const std::initializer_list<std::string_view> kLawKeys = {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN",
                                                            "ERATES", "CN",   "CT2CN", "FS", "precrack"};
+// *MAT_138 card fields of `model: cohesive` (RO as mass per unit area: the card's ROFLG = 1).
+const std::initializer_list<std::string_view> kMat138Keys = {"T",   "S",   "XMU", "GIC", "GIIC",    "EN",
+                                                             "ET",  "UND", "UTD", "RO",  "INTFAIL", "precrack"};
 
-// `interfaces:` as a mapping: {select: <all | angle-change | none | list>, model: merged | tiebreak,
-// law keys, precrack, per_interface: {k: {law keys, precrack}}}. Fills lam.delaminating and
-// lam.interface_law.
+bool listed(const std::initializer_list<std::string_view>& keys, std::string_view key) {
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+// The *MAT_138 keys of `r` (a map) on top of `p`. T and S may be 0 (then UND, UTD give them).
+void read_mat138_keys(const Reader& r, cohesive::Mat138Params& p) {
+  constexpr u::Dimension mass_per_area{-2, 1, 0};
+  const auto positive = [&](const char* key, u::Dimension d, double& field) {
+    if (r.has(key)) field = r.quantity(key, d, Limits::positive(key));
+  };
+  const auto non_negative = [&](const char* key, u::Dimension d, double& field) {
+    if (r.has(key)) field = r.quantity(key, d, Limits::non_negative(key));
+  };
+  positive("EN", u::stiffness_per_area, p.EN);
+  positive("ET", u::stiffness_per_area, p.ET);
+  positive("GIC", u::energy_per_area, p.GIC);
+  positive("GIIC", u::energy_per_area, p.GIIC);
+  non_negative("T", u::stress, p.T);
+  non_negative("S", u::stress, p.S);
+  positive("UND", u::length, p.UND);
+  positive("UTD", u::length, p.UTD);
+  non_negative("RO", mass_per_area, p.RO);
+  if (r.has("XMU")) p.XMU = r.quantity("XMU", u::dimensionless);
+  if (r.has("INTFAIL")) p.INTFAIL = r.quantity("INTFAIL", u::dimensionless, Limits::interval(-4, false, 4, false, "INTFAIL"));
+}
+
+// Keys of the other model in `r` are refused, naming the model they belong to.
+void refuse_other_model_keys(const Reader& r, bool cohesive) {
+  const auto& other = cohesive ? kLawKeys : kMat138Keys;
+  const auto& own = cohesive ? kMat138Keys : kLawKeys;
+  for (const auto& [key, item] : r.entries())
+    if (listed(other, key) && !listed(own, key))
+      item.fail(msg() << "a " << (cohesive ? "tiebreak" : "*MAT_138") << " key with model: "
+                      << (cohesive ? "cohesive" : "tiebreak"),
+                cohesive ? "the *MAT_138 keys T, S, XMU, GIC, GIIC, EN, ET, UND, UTD, RO, INTFAIL, precrack"
+                         : "the tiebreak keys OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS, precrack");
+}
+
+// `interfaces:` as a mapping: {select: <all | angle-change | none | list>, model: merged | tiebreak |
+// cohesive, law keys (tiebreak card 4 or *MAT_138), precrack, per_interface: {k: {law keys,
+// precrack}}}. Fills lam.delaminating and lam.interface_law.
 void read_interface_laws(const Reader& r, const std::vector<double>& angles, LaminateSpec& lam) {
-  r.require_map("{select: all | angle-change | none | [numbers], model: merged | tiebreak, OPTION, NFLS, ...}");
+  r.require_map("{select: all | angle-change | none | [numbers], model: merged | tiebreak | cohesive, law keys ...}");
   r.allow_keys({"select", "model", "OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "FS",
-                "precrack", "per_interface"});
+                "precrack", "per_interface", "T", "S", "XMU", "GIC", "GIIC", "EN", "ET", "UND", "UTD", "RO",
+                "INTFAIL"});
   lam.delaminating = read_interfaces(r.at("select", "all, angle-change, none, or a list of interface numbers"), angles);
   lam.interface_law.assign(lam.delaminating.size(), std::nullopt);
-  const std::string model = r.has("model") ? r.at("model", "").as_choice({"merged", "tiebreak"}) : "merged";
+  const std::string model =
+      r.has("model") ? r.at("model", "").as_choice({"merged", "tiebreak", "cohesive"}) : "merged";
   if (model == "merged") {
-    for (const auto& key : {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "FS", "precrack",
-                            "per_interface"})
-      if (r.has(key)) r.at(key, "").fail("a law parameter with model: merged (the plies stay bonded)",
-                                         "model: tiebreak to give the interfaces a law");
+    for (const auto& [key, item] : r.entries())
+      if (key != "select" && key != "model")
+        item.fail("a law parameter with model: merged (the plies stay bonded)",
+                  "model: tiebreak or model: cohesive to give the interfaces a law");
     return;
   }
+  const bool cohesive = model == "cohesive";
+  refuse_other_model_keys(r, cohesive);
   InterfaceLawSpec base;
   base.where = r.where();
-  read_law_keys(r, base.law);
+  base.model = cohesive ? InterfaceLawSpec::Model::Cohesive : InterfaceLawSpec::Model::Tiebreak;
+  const auto read_keys = [&](const Reader& from, InterfaceLawSpec& spec) {
+    if (cohesive)
+      read_mat138_keys(from, spec.mat138);
+    else
+      read_law_keys(from, spec.law);
+  };
+  read_keys(r, base);
   if (const auto p = r.find("precrack")) read_precrack(*p, lam, base);
   std::map<std::size_t, Reader> overrides;
   if (const auto per = r.find("per_interface")) {
@@ -221,8 +273,9 @@ void read_interface_laws(const Reader& r, const std::vector<double>& angles, Lam
       if (*end != '\0' || k < 1 || std::size_t(k) > lam.delaminating.size() || !lam.delaminating[std::size_t(k - 1)])
         item.fail(msg() << "interface " << key << " is not a delaminating interface of this laminate",
                   "the number of an interface chosen by select (interface i lies between plies i and i+1)");
-      item.require_map("a mapping of law keys (OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS) and precrack");
-      item.allow_keys(kLawKeys);
+      item.require_map(cohesive ? "a mapping of *MAT_138 keys (T, S, XMU, GIC, GIIC, EN, ET, UND, UTD, RO, INTFAIL) and precrack"
+                                : "a mapping of law keys (OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS) and precrack");
+      item.allow_keys(cohesive ? kMat138Keys : kLawKeys);
       overrides.emplace(std::size_t(k - 1), item);
     }
   }
@@ -232,13 +285,19 @@ void read_interface_laws(const Reader& r, const std::vector<double>& angles, Lam
     const auto it = overrides.find(i);
     if (it != overrides.end()) {
       spec.where = it->second.where();
-      read_law_keys(it->second, spec.law);
+      read_keys(it->second, spec);
       if (const auto p = it->second.find("precrack")) read_precrack(*p, lam, spec);
     }
     const Reader& at_reader = it != overrides.end() ? it->second : r;
     const SourceLocation w = at_reader.where();
-    cohesive::require_valid_traction_law(spec.law, msg() << w.file << ":" << w.line << ":" << w.column << ": "
-                                                         << w.key_path << " (interface " << i + 1 << ")");
+    const std::string where = msg() << w.file << ":" << w.line << ":" << w.column << ": " << w.key_path << " (interface "
+                                    << i + 1 << (cohesive ? ", *MAT_138)" : ")");
+    if (cohesive) {
+      cohesive::require_valid_mat138(spec.mat138, where);
+      spec.law = cohesive::traction_law_of(spec.mat138);
+    } else {
+      cohesive::require_valid_traction_law(spec.law, where);
+    }
     lam.interface_law[i] = spec;
   }
 }

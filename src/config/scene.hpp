@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cohesive/law_parameters.hpp"
+#include "cohesive/mat138_parameters.hpp"
 #include "config/johnson_cook_spec.hpp"
 #include "config/mat054_spec.hpp"
 #include "config/material_axes.hpp"
@@ -215,7 +216,10 @@ struct SupportSpec {
 // Traction-separation law of one delaminating interface (*CONTACT_..._TIEBREAK card 4) and the
 // region of it that starts separated (a pre-crack: its pairs start with damage 1).
 struct InterfaceLawSpec {
-  cohesive::TractionLawParams law;
+  enum class Model { Tiebreak, Cohesive };  // node pairs (tiebreak) or 8-node *MAT_138 elements
+  Model model = Model::Tiebreak;
+  cohesive::TractionLawParams law;          // Cohesive: the OPTION 9 law of `mat138`
+  cohesive::Mat138Params mat138;            // Cohesive only: the card as given
   bool has_precrack = false;
   double precrack_x[2] = {0, 0}, precrack_y[2] = {0, 0};  // m, region of the plate (y: whole width if not given)
   SourceLocation where;

@@ -27,17 +27,19 @@ class SeparatePairs : public StateVisitor {
   const std::vector<char>& separated_;
 };
 
-// Pairs whose lower node lies in the pre-crack region (closed, with a round-off margin).
+// Whether X (x, y) lies in the pre-crack region of `spec` (closed, with a round-off margin).
+bool in_precrack(const config::InterfaceLawSpec& spec, const double* X) {
+  const double tol = 1e-9 * std::max(spec.precrack_x[1], spec.precrack_y[1]);
+  return X[0] >= spec.precrack_x[0] - tol && X[0] <= spec.precrack_x[1] + tol && X[1] >= spec.precrack_y[0] - tol &&
+         X[1] <= spec.precrack_y[1] + tol;
+}
+
+// Pairs whose lower node lies in the pre-crack region.
 std::vector<char> precrack_pairs(const model::Model& model, const model::Interface& itf) {
   std::vector<char> in(itf.num_pairs(), 0);
   const auto& spec = *itf.tiebreak;
   if (!spec.has_precrack) return in;
-  const double tol = 1e-9 * std::max(spec.precrack_x[1], spec.precrack_y[1]);
-  for (std::size_t p = 0; p < in.size(); ++p) {
-    const double* X = &model.X[3 * std::size_t(itf.lower_nodes[p])];
-    in[p] = X[0] >= spec.precrack_x[0] - tol && X[0] <= spec.precrack_x[1] + tol && X[1] >= spec.precrack_y[0] - tol &&
-            X[1] <= spec.precrack_y[1] + tol;
-  }
+  for (std::size_t p = 0; p < in.size(); ++p) in[p] = in_precrack(spec, &model.X[3 * std::size_t(itf.lower_nodes[p])]);
   return in;
 }
 
@@ -63,6 +65,48 @@ std::string tiebreak_law_text(const cohesive::TractionLawParams& p) {
   s << ", CN " << p.CN * 1e-12 << " kN/mm^3";
   if (p.option == cohesive::TiebreakOption::MixedMode) s << ", CT2CN " << p.CT2CN;
   return s.str();
+}
+
+namespace {
+
+bool is_cohesive(const model::Interface& itf) {
+  return itf.tiebreak && itf.tiebreak->model == config::InterfaceLawSpec::Model::Cohesive;
+}
+
+std::string mat138_text(const cohesive::Mat138Params& p, const cohesive::TractionLawParams& law) {
+  std::ostringstream s;
+  s << "*MAT_138 cohesive elements (8-node, " << (p.INTFAIL > 0 ? "2x2 Gauss" : "4 Newton-Cotes (corner)")
+    << " points; the OPTION 9 law), EN " << p.EN * 1e-12
+    << " kN/mm^3, ET " << p.ET * 1e-12 << " kN/mm^3, T " << law.NFLS * 1e-6 << " MPa, S " << law.SFLS * 1e-6
+    << " MPa, GIC " << p.GIC << " J/m^2, GIIC " << p.GIIC << " J/m^2, XMU " << p.XMU;
+  if (p.RO > 0) s << ", RO " << p.RO << " kg/m^2";
+  return s.str();
+}
+
+}  // namespace
+
+cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, const model::Interface& itf) {
+  const std::vector<Index> faces = cohesive::pair_faces_from_segments(itf.lower_nodes, itf.lower_segments);
+  cohesive::CohesiveElementsSpec spec;
+  spec.integration = itf.tiebreak->mat138.INTFAIL > 0 ? cohesive::CohesiveIntegration::Gauss
+                                                      : cohesive::CohesiveIntegration::NewtonCotes;
+  const std::size_t ne = faces.size() / 4;
+  spec.nodes.resize(8 * ne);
+  for (std::size_t e = 0; e < ne; ++e)
+    for (int a = 0; a < 4; ++a) {
+      const Index pair = faces[4 * e + a];
+      spec.nodes[8 * e + a] = itf.lower_nodes[pair];
+      spec.nodes[8 * e + 4 + a] = itf.upper_nodes[pair];
+    }
+  cohesive::CohesiveElements elements(itf.tiebreak->law, std::move(spec), model.X.data(), model.mass.data());
+  const auto& law = *itf.tiebreak;
+  if (law.has_precrack) {
+    std::vector<double> at(3 * elements.num_points());
+    elements.point_positions(model.X.data(), at.data());
+    for (std::size_t p = 0; p < elements.num_points(); ++p)
+      if (in_precrack(law, &at[3 * p])) elements.separate_point(p);
+  }
+  return elements;
 }
 
 cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const model::Interface& itf) {
@@ -94,21 +138,32 @@ model::Subsystem InterfaceTiebreaks::describe(const model::Model& model) {
                 "model: tiebreak gives them a law"};
   // One clause per run of interfaces with the same law: "interfaces 1, 2, 3: <law>".
   std::ostringstream d;
-  d << tagged << " tiebreak interface(s), " << pairs << " node pairs";
+  d << tagged << " delaminating interface(s) with a law, " << pairs << " node pairs";
   double dt_min = std::numeric_limits<double>::infinity(), precrack = 0;
   int dt_id = 0;
   std::string last_law;
   for (const auto& itf : model.interfaces) {
     if (!itf.tiebreak) continue;
-    const cohesive::TiebreakPairs kernel = make_interface_pairs(model, itf);
-    const std::string law = tiebreak_law_text(itf.tiebreak->law);
+    double step = 0;
+    std::string law;
+    if (is_cohesive(itf)) {
+      const cohesive::CohesiveElements kernel = make_interface_cohesive(model, itf);
+      law = mat138_text(itf.tiebreak->mat138, itf.tiebreak->law);
+      for (std::size_t p = 0; p < kernel.num_points(); ++p)
+        if (kernel.damage()[p] >= 1) precrack += kernel.point_area(p);
+      step = kernel.stable_step();
+    } else {
+      const cohesive::TiebreakPairs kernel = make_interface_pairs(model, itf);
+      law = tiebreak_law_text(itf.tiebreak->law);
+      for (std::size_t p = 0; p < kernel.size(); ++p)
+        if (kernel.damage()[p] >= 1) precrack += kernel.area(p);
+      step = kernel.stable_step();
+    }
     if (law != last_law) d << "; " << law << ": interface " << itf.id;
     else d << ", " << itf.id;
     last_law = law;
-    for (std::size_t p = 0; p < kernel.size(); ++p)
-      if (kernel.damage()[p] >= 1) precrack += kernel.area(p);
-    if (kernel.stable_step() < dt_min) {
-      dt_min = kernel.stable_step();
+    if (step < dt_min) {
+      dt_min = step;
       dt_id = itf.id;
     }
   }
@@ -122,14 +177,22 @@ InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_elem
   stable_step_ = std::numeric_limits<double>::infinity();
   for (const auto& itf : model.interfaces) {
     if (!itf.tiebreak) continue;
-    pairs_.push_back(make_interface_pairs(model, itf));
-    ids_.push_back(itf.id);
-    layouts_.push_back(pair_layout(itf));
-    stable_step_ = std::min(stable_step_, pairs_.back().stable_step());
+    if (is_cohesive(itf)) {
+      cohesive_.push_back(make_interface_cohesive(model, itf));
+      cohesive_ids_.push_back(itf.id);
+      columns_.emplace_back(true, cohesive_.size() - 1);
+      stable_step_ = std::min(stable_step_, cohesive_.back().stable_step());
+    } else {
+      pairs_.push_back(make_interface_pairs(model, itf));
+      ids_.push_back(itf.id);
+      layouts_.push_back(pair_layout(itf));
+      columns_.emplace_back(false, pairs_.size() - 1);
+      stable_step_ = std::min(stable_step_, pairs_.back().stable_step());
+    }
   }
   if (stable_step_ < dt_element) {
     std::ostringstream w;
-    w << "interface stiffness controls the step: the stiffest tiebreak pair alone allows " << stable_step_
+    w << "interface stiffness controls the step: the stiffest tiebreak pair or cohesive node pair alone allows " << stable_step_
       << " s against the elements' " << dt_element << " s (CN too high for the ply's mass; the step is "
       << solver::combined_step(dt_element, stable_step_) << " s before TSSFAC)";
     warnings_.push_back(w.str());
@@ -142,6 +205,10 @@ void InterfaceTiebreaks::apply(const solver::ForceContext& c) {
     p.apply(c.x, c.v, c.f, c.dt);
     dt = std::min(dt, p.stable_step());
   }
+  for (auto& e : cohesive_) {
+    e.apply(c.x, c.v, c.f, c.dt);
+    dt = std::min(dt, e.stable_step());
+  }
   stable_step_ = dt;
 }
 
@@ -151,6 +218,10 @@ void InterfaceTiebreaks::energies(std::span<double> out) const {
     elastic += p.elastic_energy();
     dissipated += p.dissipated_energy();
   }
+  for (const auto& e : cohesive_) {
+    elastic += e.elastic_energy();
+    dissipated += e.dissipated_energy();
+  }
   out[0] = elastic;
   out[1] = dissipated;
 }
@@ -158,18 +229,21 @@ void InterfaceTiebreaks::energies(std::span<double> out) const {
 double InterfaceTiebreaks::delaminated_area() const {
   double a = 0;
   for (const auto& p : pairs_) a += p.separated_area();
+  for (const auto& e : cohesive_) a += e.separated_area();
   return a;
 }
 
 std::vector<std::string> InterfaceTiebreaks::history_columns() const {
   std::vector<std::string> cols{"delaminated_area"};
-  for (int id : ids_) cols.push_back("delaminated_area_" + std::to_string(id));
+  for (const auto& [is_cohesive_column, k] : columns_)
+    cols.push_back("delaminated_area_" + std::to_string(is_cohesive_column ? cohesive_ids_[k] : ids_[k]));
   return cols;
 }
 
 void InterfaceTiebreaks::history_values(std::vector<double>& row) const {
   row.push_back(delaminated_area());
-  for (const auto& p : pairs_) row.push_back(p.separated_area());
+  for (const auto& [is_cohesive_column, k] : columns_)
+    row.push_back(is_cohesive_column ? cohesive_[k].separated_area() : pairs_[k].separated_area());
 }
 
 void InterfaceTiebreaks::visit_state(StateVisitor& visitor) {
@@ -177,6 +251,10 @@ void InterfaceTiebreaks::visit_state(StateVisitor& visitor) {
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
     StateGroup one(visitor, "interface " + std::to_string(ids_[i]));
     pairs_[i].visit_state(visitor);
+  }
+  for (std::size_t i = 0; i < cohesive_.size(); ++i) {
+    StateGroup one(visitor, "cohesive interface " + std::to_string(cohesive_ids_[i]));
+    cohesive_[i].visit_state(visitor);
   }
 }
 

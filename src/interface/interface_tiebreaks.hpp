@@ -7,12 +7,16 @@
 // as it does the contact springs). A pre-crack is part of the initial history: the pairs whose
 // reference position lies in the region start with damage 1 (separated: contact only).
 // History: the delaminated (damage 1) area in total and per interface, pre-crack included.
-// Outputs: an InterfaceSampleSource whose sample points are the pairs (interface_output.hpp).
+// Outputs: an InterfaceSampleSource whose sample points are the pairs (interface_output.hpp); the
+// cohesive interfaces are not in the outputs yet.
+// An interface with `model: cohesive` gets *MAT_138 cohesive elements (cohesive::CohesiveElements,
+// one per interface segment) instead of pairs; they report under the same energies and columns.
 #pragma once
 
 #include <string>
 #include <vector>
 
+#include "cohesive/cohesive_elements.hpp"
 #include "cohesive/tiebreak_pairs.hpp"
 #include "interface/interface_output.hpp"
 #include "solver/force_contributor.hpp"
@@ -42,6 +46,8 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
   const std::vector<cohesive::TiebreakPairs>& pairs() const { return pairs_; }
   const std::vector<int>& interface_ids() const { return ids_; }  // 1-based number of each pairs_ entry
   double delaminated_area() const;                                 // m^2, all interfaces
+  const std::vector<cohesive::CohesiveElements>& cohesive() const { return cohesive_; }
+  const std::vector<int>& cohesive_ids() const { return cohesive_ids_; }  // 1-based number of each cohesive_ entry
 
   std::size_t num_interfaces() const override { return pairs_.size(); }
   const InterfaceLayout& layout(std::size_t i) const override { return layouts_[i]; }
@@ -51,6 +57,9 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
   std::vector<cohesive::TiebreakPairs> pairs_;
   std::vector<int> ids_;
   std::vector<InterfaceLayout> layouts_;  // (pairs_.size()) for the outputs
+  std::vector<cohesive::CohesiveElements> cohesive_;
+  std::vector<int> cohesive_ids_;
+  std::vector<std::pair<bool, std::size_t>> columns_;  // per interface in id order: (cohesive, index)
   std::vector<std::string> warnings_;
   double stable_step_ = 0;
 };
@@ -58,6 +67,12 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
 // The kernel of one interface (exposed for `check` and tests): pairs, areas, normals and faces of
 // `itf`, its law, and its pre-crack applied to the initial damage.
 cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const model::Interface& itf);
+
+// The *MAT_138 elements of one `model: cohesive` interface: one per interface segment (lower face from
+// the lower segment, upper face from the partner nodes), its law and integration rule (INTFAIL), and
+// its pre-crack: the points whose reference position lies in the region start separated (the
+// tiebreak's rule for its pairs; with corner points the two rules coincide).
+cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, const model::Interface& itf);
 
 // One line naming the law and its card values ("OPTION 9 (bilinear mixed mode), NFLS 60 MPa, ...").
 std::string tiebreak_law_text(const cohesive::TractionLawParams& p);

@@ -210,6 +210,8 @@ class Converter {
         {"MAT_098", &Converter::mat_simplified_johnson_cook},
         {"EOS_LINEAR_POLYNOMIAL", &Converter::eos_linear_polynomial},
         {"EOS_GRUNEISEN", &Converter::eos_gruneisen},
+        {"MAT_COHESIVE_MIXED_MODE", &Converter::mat_138},
+        {"MAT_138", &Converter::mat_138},
         {"SET_NODE_LIST", &Converter::set_node_list},
         {"SET_PART_LIST", &Converter::set_part_list},
         {"SET_SEGMENT", &Converter::set_segment},
@@ -350,12 +352,27 @@ class Converter {
     return "part_" + std::to_string(p.pid);
   }
 
+  // Cohesive solids of a deck are explicit elements between parts; the scene format has cohesive
+  // elements only as the interfaces of a meshed laminate (they need the laminate's duplicated nodes
+  // and its interface numbering), so a deck's ELFORM 19/20 parts have nothing to map onto.
+  static constexpr const char* kCohesiveSolidsRefusal =
+      "cohesive solids (ELFORM 19/20 with *MAT_138) between parts of a deck are not mapped: the scene "
+      "format places *MAT_138 cohesive elements only on a laminate's interfaces (laminate.interfaces: "
+      "{model: cohesive, T, S, XMU, GIC, GIIC, EN, ET}, docs/delamination.md)";
+
+  // *MAT_COHESIVE_MIXED_MODE (*MAT_138): refused, see kCohesiveSolidsRefusal.
+  std::string mat_138(const Card& c, std::string&) {
+    throw InputError(msg() << where(c) << "*" << c.keyword << ": " << kCohesiveSolidsRefusal);
+  }
+
   // *SECTION_SOLID (Vol. I): SECID ELFORM AET; ELFORM 1 (default) or 2.
   std::string section_solid(const Card& c, std::string&) {
     const FixedCards cards(c, 1, skip());
     const Fields f = cards.fields(0, tens({"SECID", "ELFORM", "AET", "F4", "F5", "F6", "F7", "F8"}));
     const long id = f.integer("SECID", 0);
     const long elform = f.integer("ELFORM", 1);
+    if (elform == 19 || elform == 20)
+      f.fail("ELFORM", std::string(kCohesiveSolidsRefusal) + "; allowed here: 1 or 2");
     if (elform != 1 && elform != 2) f.fail("ELFORM", "element formulation not implemented; allowed: 1 or 2");
     f.require_default("AET", 0, "ambient element type");
     for (const char* n : {"F4", "F5", "F6", "F7", "F8"}) f.require_default(n, 0, "fields after AET");

@@ -106,8 +106,8 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
     block.conn.insert(block.conn.end(), &mesh.hex[8 * e], &mesh.hex[8 * e] + 8);
     block.element_id.push_back(Index(e + 1));
   }
-  // Tagged interfaces have duplicated (coincident) nodes. An interface with a tiebreak law keeps
-  // them apart: each ply's elements use their own nodes (so each node's lumped mass comes from its
+  // Tagged interfaces have duplicated (coincident) nodes. An interface with a law (tiebreak pairs or
+  // *MAT_138 cohesive elements) keeps them apart: each ply's elements use their own nodes (so each node's lumped mass comes from its
   // own ply) and the interface contributor holds the pairs together. An interface without a law
   // (`model: merged`) is bonded: the upper ply's elements use the lower partner nodes, so the
   // laminate is one body; the upper duplicates remain as unused, massless nodes.
@@ -267,6 +267,16 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
       added.lower_angle = plies[std::size_t(itf.lower_ply)].angle;
       added.upper_angle = plies[std::size_t(itf.upper_ply)].angle;
       for (std::size_t p = std::size_t(itf.upper_ply); p < plies.size(); ++p) added.depth += plies[p].thickness;
+    }
+  }
+  // *MAT_138 elements with RO (mass per unit mid-surface area, the card's ROFLG = 1) add RO A to the
+  // interface: half to each face, each node its tributary share A_p of the mid-surface.
+  for (const auto& itf : model.interfaces) {
+    if (!itf.tiebreak || itf.tiebreak->model != config::InterfaceLawSpec::Model::Cohesive) continue;
+    const double ro = itf.tiebreak->mat138.RO;
+    for (std::size_t p = 0; p < itf.num_pairs() && ro > 0; ++p) {
+      model.mass[std::size_t(itf.lower_nodes[p])] += 0.5 * ro * itf.area[p];
+      model.mass[std::size_t(itf.upper_nodes[p])] += 0.5 * ro * itf.area[p];
     }
   }
   if (mesh.impactor) model.impactor = make_impactor(*mesh.impactor);
