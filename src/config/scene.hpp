@@ -160,8 +160,10 @@ struct ControlSpec {
 };
 
 struct OutputSpec {
+  enum class Compression { None, ZLib, LZ4 };
   double interval = 0;          // s between VTU frames; 0 = 20 frames over the run
   double history_interval = 0;  // s between history.csv rows; 0 = 1000 rows over the run
+  Compression compression = Compression::ZLib;  // of the VTU frames (lossless)
 };
 
 // One ply of a laminate, bottom (z = 0) to top.

@@ -2,21 +2,45 @@
 
 #include <cstdio>
 
-#include "output/vtu_writer.hpp"
 #include "run/frame_builder.hpp"
 
 namespace plyimpact::run {
 
+namespace {
+
+output::Compression compression_of(config::OutputSpec::Compression c) {
+  switch (c) {
+    case config::OutputSpec::Compression::None: return output::Compression::none;
+    case config::OutputSpec::Compression::LZ4: return output::Compression::lz4;
+    case config::OutputSpec::Compression::ZLib: break;
+  }
+  return output::Compression::zlib;
+}
+
+}  // namespace
+
 FrameWriter::FrameWriter(const model::Model& model, const std::filesystem::path& dir, double interval)
-    : dir_(dir), name_(model.name), t_end_(model.control.termination_time), pvd_(dir, model.name), frames_(interval) {}
+    : dir_(dir), name_(model.name), t_end_(model.control.termination_time), pvd_(dir, model.name), frames_(interval) {
+  options_.compression = compression_of(model.output.compression);
+}
 
 void FrameWriter::write(const solver::Solver& solver) {
-  char file[64];
-  std::snprintf(file, sizeof file, "_%04zu.vtu", pvd_.size());
-  const std::string vtu = name_ + file;
-  output::write_vtu(make_frame(solver), dir_ / vtu);
-  pvd_.add(solver.state().time, vtu);
+  char number[32];
+  std::snprintf(number, sizeof number, "_%04zu.vtu", written_);
+  const double t = solver.state().time;
+  const std::string bodies = name_ + number;
+  output::write_vtu(make_frame(solver), dir_ / bodies, options_);
+  const output::Frame rigid = make_rigid_frame(solver);
+  if (rigid.num_cells() == 0) {
+    pvd_.add(t, bodies);
+  } else {
+    const std::string rigid_file = name_ + "_rigid" + number;
+    output::write_vtu(rigid, dir_ / rigid_file, options_);
+    pvd_.add(t, bodies, 0, "bodies");
+    pvd_.add(t, rigid_file, 1, "rigid");
+  }
   pvd_.write();
+  ++written_;
 }
 
 void FrameWriter::after_cycle(const solver::Solver& solver) {

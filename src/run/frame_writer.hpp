@@ -1,11 +1,17 @@
-// Frames: <scene>_NNNN.vtu at t = 0, every frame interval and at the end, listed in <scene>.pvd
-// (rewritten with every frame, so ParaView can open a run in progress or one that stopped).
+// Frames: at t = 0, every frame interval and at the end, listed in <scene>.pvd (rewritten with
+// every frame, so ParaView can open a run in progress or one that stopped). Each time has the
+// deformable bodies in <scene>_NNNN.vtu and, when the model has rigid bodies with geometry (the
+// meshed rigid impactor, *MAT_020 parts), those in <scene>_rigid_NNNN.vtu: the .pvd lists both as
+// parts named "bodies" and "rigid", which ParaView's PVD reader turns into the two blocks of one
+// multiblock source, so the impactor moves with the plate through time without a second source.
+// Compressed as the scene's output.compression says (zlib by default).
 #pragma once
 
 #include <filesystem>
 #include <string>
 
 #include "output/pvd_series.hpp"
+#include "output/vtu_writer.hpp"
 #include "run/run_observer.hpp"
 
 namespace plyimpact::run {
@@ -24,8 +30,10 @@ class FrameWriter : public RunObserver {
   std::filesystem::path dir_;
   std::string name_;
   double t_end_;
+  output::WriteOptions options_;
   output::PvdSeries pvd_;
   Sampler frames_;
+  std::size_t written_ = 0;  // frames (times) written so far
 };
 
 }  // namespace plyimpact::run
