@@ -49,12 +49,13 @@ def read_pvd(path):
 
 
 # ---------------------------------------------------------------------------- VTK front end
-def _read_vtu(path):
-    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridReader
-    r = vtkXMLUnstructuredGridReader()
+def _read_vtk_xml(path):
+    """A .vtu, or a .vtm multiblock (the interfaces' frames)."""
+    from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataReader, vtkXMLUnstructuredGridReader
+    r = vtkXMLMultiBlockDataReader() if path.endswith(".vtm") else vtkXMLUnstructuredGridReader()
     r.SetFileName(path)
     r.Update()
-    return r.GetOutput()
+    return r.GetOutputDataObject(0)
 
 
 def read_frame(pvd, time=None):
@@ -67,13 +68,13 @@ def read_frame(pvd, time=None):
         raise SystemExit("paraview_view: %s lists no data sets" % pvd)
     t, parts = series[-1] if time is None else min(series, key=lambda e: abs(e[0] - time))
     if len(parts) == 1:
-        return t, _read_vtu(parts[0][2])
+        return t, _read_vtk_xml(parts[0][2])
     mb = vtkMultiBlockDataSet()
     mb.SetNumberOfBlocks(len(parts))
     for i, (_, name, f) in enumerate(parts):
         piece = vtkMultiBlockDataSet()
         piece.SetNumberOfBlocks(1)
-        piece.SetBlock(0, _read_vtu(f))
+        piece.SetBlock(0, _read_vtk_xml(f))
         mb.SetBlock(i, piece)
         if name:
             mb.GetMetaData(i).Set(vtkCompositeDataSet.NAME(), name)
@@ -130,25 +131,25 @@ def render_vtk(result, time=None, png=None):
 
     lut = _categorical_lut()
     add(pipeline.ply_tiles(frame), lut, pipeline.DAMAGE_ARRAY)
-    add(pipeline.ply_labels(frame), colour=pipeline.LABEL_COLOUR)
-    if result["interfaces"]:
-        _, interfaces = read_frame(result["interfaces"], t)
-        tiles = pipeline.interface_tiles(interfaces, bounds)
-        chosen = pipeline.colour_array(tiles) if tiles.GetNumberOfCells() else None
+    interfaces = read_frame(result["interfaces"], t)[1] if result["interfaces"] else None
+    cscan = _read_vtk_xml(result["cscan"]) if result["cscan"] else None
+    add(pipeline.tile_labels(frame, interfaces, cscan), colour=pipeline.LABEL_COLOUR)
+    if interfaces is not None:
         ilut = vtkLookupTable()
         ilut.SetRange(*pipeline.INTERFACE_RANGE)
         ilut.SetHueRange(0.66, 0.0)
         ilut.Build()
-        add(tiles, ilut, chosen[1] if chosen else None, chosen[0] if chosen else "CELLS")
-    if result["cscan"]:
-        cscan = pipeline.cscan_tile(_read_vtu(result["cscan"]), bounds)
-        chosen = pipeline.colour_array(cscan) if cscan.GetNumberOfCells() else None
+        add(pipeline.interface_tiles(interfaces, bounds), ilut, pipeline.INTERFACE_ARRAY[1], pipeline.INTERFACE_ARRAY[0])
+    if cscan is not None:
+        tile = pipeline.cscan_tile(cscan, bounds)
+        chosen = pipeline.colour_array(tile) if tile.GetNumberOfCells() else None
         clut = vtkLookupTable()
         if chosen:
-            attr = cscan.GetCellData() if chosen[0] == "CELLS" else cscan.GetPointData()
+            attr = tile.GetCellData() if chosen[0] == "CELLS" else tile.GetPointData()
             clut.SetRange(attr.GetArray(chosen[1]).GetRange(0))
+        clut.SetNanColor(*pipeline.NAN_COLOUR, 1.0)
         clut.Build()
-        add(cscan, clut, chosen[1] if chosen else None, chosen[0] if chosen else "CELLS")
+        add(tile, clut, chosen[1] if chosen else None, chosen[0] if chosen else "CELLS")
 
     bar = vtkScalarBarActor()
     bar.SetLookupTable(lut)
@@ -229,12 +230,8 @@ def render_paraview(simple, result, time=None, png=None):
     lut.Annotations = [x for v, _, label in pipeline.DAMAGE_CATEGORIES for x in (str(v), label)]
     lut.IndexedColors = [c for _, rgb, _ in pipeline.DAMAGE_CATEGORIES for c in rgb]
     display.SetScalarBarVisibility(view, True)
-    labels = _programmable(simple, frames, "ply_labels", "vtkPolyData", "ply labels")
-    simple.ColorBy(simple.Show(labels, view), None)
-    simple.GetDisplayProperties(labels, view).AmbientColor = list(pipeline.LABEL_COLOUR)
-    simple.GetDisplayProperties(labels, view).DiffuseColor = list(pipeline.LABEL_COLOUR)
-
     bounds = "pipeline.plate_bounds(self.GetInputDataObject(0, 1))"
+    label_inputs = [frames]
     if result["interfaces"]:
         interfaces = simple.PVDReader(registrationName="interfaces.pvd", FileName=result["interfaces"])
         simple.Hide(interfaces, view)
@@ -243,11 +240,9 @@ def render_paraview(simple, result, time=None, png=None):
         tiles.Script = ("import sys\nsys.path.insert(0, %r)\nimport paraview_view_pipeline as pipeline\n"
                         "self.GetOutputDataObject(0).ShallowCopy(pipeline.interface_tiles("
                         "self.GetInputDataObject(0, 0), %s))\n" % (TOOLS, bounds))
-        shown = simple.Show(tiles, view)
-        simple.UpdatePipeline(proxy=tiles)
-        chosen = pipeline.colour_array(simple.servermanager.Fetch(tiles))
-        if chosen:
-            simple.ColorBy(shown, chosen)
+        simple.ColorBy(simple.Show(tiles, view), pipeline.INTERFACE_ARRAY)
+        simple.GetColorTransferFunction(pipeline.INTERFACE_ARRAY[1]).RescaleTransferFunction(*pipeline.INTERFACE_RANGE)
+        label_inputs.append(interfaces)
     if result["cscan"]:
         cscan = simple.XMLUnstructuredGridReader(registrationName="cscan.vtu", FileName=[result["cscan"]])
         simple.Hide(cscan, view)
@@ -261,6 +256,25 @@ def render_paraview(simple, result, time=None, png=None):
         chosen = pipeline.colour_array(simple.servermanager.Fetch(tile))
         if chosen:
             simple.ColorBy(shown, chosen)
+            simple.GetColorTransferFunction(chosen[1]).NanColor = list(pipeline.NAN_COLOUR)
+        label_inputs.append(cscan)
+
+    # Labels of every tile; inputs: frames, then interfaces and cscan when present.
+    labels = simple.ProgrammableFilter(registrationName="labels", Input=label_inputs)
+    labels.OutputDataSetType = "vtkPolyData"
+    arg = {"interfaces": "None", "cscan": "None"}
+    k = 1
+    for key in ("interfaces", "cscan"):
+        if result[key]:
+            arg[key] = "self.GetInputDataObject(0, %d)" % k
+            k += 1
+    labels.Script = ("import sys\nsys.path.insert(0, %r)\nimport paraview_view_pipeline as pipeline\n"
+                     "self.GetOutputDataObject(0).ShallowCopy(pipeline.tile_labels(self.GetInputDataObject(0, 0), "
+                     "%s, %s))\n" % (TOOLS, arg["interfaces"], arg["cscan"]))
+    shown = simple.Show(labels, view)
+    simple.ColorBy(shown, None)
+    shown.AmbientColor = list(pipeline.LABEL_COLOUR)
+    shown.DiffuseColor = list(pipeline.LABEL_COLOUR)
 
     view.CameraParallelProjection = 1
     view.CameraPosition = [0, 0, 1]

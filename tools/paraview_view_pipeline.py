@@ -4,9 +4,10 @@ the VTK-only renderer calls them directly.
 
 The view: every ply of the last frame (or the chosen time) seen from above, side by side in a grid
 (ply 1, the bottom ply, first), coloured by how many of its four *MAT_054 failure modes have
-failed (0-4) and with eroded elements marked; then, when the result folder has them, the
-interfaces (interfaces.pvd: damage of each tiebreak interface) in a second grid and the projected
-delamination map (cscan.vtu). Each tile is labelled ("ply 3  -45").
+failed (0-4) and with eroded elements marked; when the result folder has them, the interfaces
+(interfaces.pvd: the damage of each tiebreak interface) in a second grid to the right and the
+projected delamination map (cscan.vtu: depth of the shallowest delamination) to the left. Each
+tile is labelled ("ply 3  -45", "interface 3 (plies 3/4, -45/90)").
 
 Inputs follow the frame files (docs/outputs.md): the bodies block (cell arrays ply_index,
 ply_angle, alive, mat054_ef/ec/em/ed) and the rigid block, as ParaView's PVD reader delivers them
@@ -35,12 +36,17 @@ DAMAGE_CATEGORIES = [  # value, RGB, label
     (ERODED, (0.10, 0.10, 0.10), "eroded"),
 ]
 INTERFACE_RANGE = (0.0, 1.0)  # interface damage
+NAN_COLOUR = (1.0, 1.0, 1.0)  # C-scan: nothing delaminated there
 BACKGROUND = (1.0, 1.0, 1.0)
 LABEL_COLOUR = (0.0, 0.0, 0.0)
 WINDOW_SIZE = (1600, 1000)
 COLUMNS = 4  # tiles per row
 TILE_MARGIN = 0.12  # gap between tiles, as a fraction of the plate's size
 LABEL_HEIGHT = 0.09  # label text height, as a fraction of the plate's width
+INTERFACES_X = COLUMNS + 0.5  # first column of the interfaces' grid, in tiles (right of the plies)
+CSCAN_X = -1.5  # column of the C-scan tile (left of the plies)
+INTERFACE_ARRAY = ("POINTS", "damage")  # 0 intact ... 1 separated
+CSCAN_ARRAYS = ("depth_shallowest", "depth", "damage")  # preferred colouring of cscan.vtu
 
 
 # ---------------------------------------------------------------------------- blocks
@@ -178,110 +184,81 @@ def ply_tiles(frame):
     return with_damage_count(out)
 
 
-def ply_labels(frame):
-    """Labels "ply <n>  <angle>" under each tile of ply_tiles, as polygons (vtkVectorText)."""
+def interface_tiles(interfaces, plate_bounds):
+    """The interfaces (interfaces.pvd at the same time: one named block per interface, point data
+    `damage`) as a second grid to the right of the plies' grid, each flattened to z = 0."""
+    out = vtkUnstructuredGrid()
+    blocks = [b for b in named_blocks(interfaces).values() if b.GetNumberOfCells() > 0]
+    if not blocks:
+        return out
+    px, py = _tile_pitch(plate_bounds)
+    append = vtkAppendFilter()
+    for k, block in enumerate(blocks):
+        zb = block.GetBounds()
+        append.AddInputData(_moved(block, INTERFACES_X * px + (k % COLUMNS) * px, -(k // COLUMNS) * py, -zb[5]))
+    append.Update()
+    out.ShallowCopy(append.GetOutput())
+    return out
+
+
+def cscan_tile(cscan, plate_bounds):
+    """The projected delamination map (cscan.vtu, cell data depth_shallowest) to the left of the
+    plies' grid, at z = 0."""
+    out = vtkUnstructuredGrid()
+    if cscan is None or cscan.GetNumberOfCells() == 0:
+        return out
+    px, _ = _tile_pitch(plate_bounds)
+    zb = cscan.GetBounds()
+    append = vtkAppendFilter()
+    append.AddInputData(_moved(cscan, CSCAN_X * px, 0.0, -zb[5]))
+    append.Update()
+    out.ShallowCopy(append.GetOutput())
+    return out
+
+
+def tile_labels(frame, interfaces=None, cscan=None):
+    """Labels under every tile: "ply <n>  <angle>", the interfaces' block names, "C-scan"."""
     bodies = named_blocks(frame).get("bodies")
     out = vtkPolyData()
-    if bodies is None or bodies.GetCellData().GetArray("ply_index") is None:
+    if bodies is None:
         return out
     b = bodies.GetBounds()
     px, py = _tile_pitch(b)
     height = LABEL_HEIGHT * (b[3] - b[2])
     append = vtkAppendPolyData()
+
+    def label(text, x, row):
+        append.AddInputData(_label(text, b[0] + x, b[2] - row * py - 1.6 * height, height))
+
     k = 0
-    for ply in _int_range(bodies, "ply_index"):
-        if ply <= 0:
-            continue
-        one = _threshold(bodies, "ply_index", ply - 0.5, ply + 0.5)
-        if one.GetNumberOfCells() == 0:
-            continue
-        angle = one.GetCellData().GetArray("ply_angle")
-        text = "ply %d" % ply
-        if angle is not None and angle.GetValue(0) == angle.GetValue(0):  # not NaN
-            text += "  %g" % round(angle.GetValue(0), 1)
-        append.AddInputData(_label(text, b[0] + (k % COLUMNS) * px, b[2] - (k // COLUMNS) * py - 1.6 * height, height))
-        k += 1
-    if k == 0:
-        return out
-    append.Update()
-    out.ShallowCopy(append.GetOutput())
-    return out
-
-
-def _interface_ids(data):
-    for attr in (data.GetCellData(), data.GetPointData()):
-        if attr.GetArray("interface_id") is not None:
-            return attr
-    return None
-
-
-def interface_tiles(interfaces, plate_bounds):
-    """The interfaces (interfaces.pvd's data at the same time) as a second grid to the right of the
-    plies' grid, one tile per interface_id when the data has that array, flattened to z = 0."""
-    data = named_blocks(interfaces)
-    out = vtkUnstructuredGrid()
-    if not data:
-        return out
-    surface = next(iter(data.values()))
-    px, py = _tile_pitch(plate_bounds)
-    x0 = (COLUMNS + 0.5) * px
-    append = vtkAppendFilter()
-    attr = _interface_ids(surface)
-    if attr is None:
-        zb = surface.GetBounds()
-        append.AddInputData(_moved(surface, x0, 0.0, -zb[5]))
-    else:
-        k = 0
-        for i in _range_of(attr.GetArray("interface_id")):
-            one = _threshold_any(surface, attr is surface.GetCellData(), "interface_id", i)
+    if bodies.GetCellData().GetArray("ply_index") is not None:
+        for ply in _int_range(bodies, "ply_index"):
+            if ply <= 0:
+                continue
+            one = _threshold(bodies, "ply_index", ply - 0.5, ply + 0.5)
             if one.GetNumberOfCells() == 0:
                 continue
-            zb = one.GetBounds()
-            append.AddInputData(_moved(one, x0 + (k % COLUMNS) * px, -(k // COLUMNS) * py, -zb[5]))
+            angle = one.GetCellData().GetArray("ply_angle")
+            text = "ply %d" % ply
+            if angle is not None and angle.GetValue(0) == angle.GetValue(0):  # not NaN
+                text += "  %g" % round(angle.GetValue(0), 1)
+            label(text, (k % COLUMNS) * px, k // COLUMNS)
             k += 1
-        if k == 0:
-            return out
-    append.Update()
-    out.ShallowCopy(append.GetOutput())
-    return out
-
-
-def _range_of(array):
-    lo, hi = array.GetRange(0)
-    return range(int(round(lo)), int(round(hi)) + 1)
-
-
-def _threshold_any(data, on_cells, array, value):
-    t = vtkThreshold()
-    t.SetInputData(data)
-    assoc = vtkDataObject.FIELD_ASSOCIATION_CELLS if on_cells else vtkDataObject.FIELD_ASSOCIATION_POINTS
-    t.SetInputArrayToProcess(0, 0, 0, assoc, array)
-    t.SetLowerThreshold(value - 0.5)
-    t.SetUpperThreshold(value + 0.5)
-    t.SetThresholdFunction(vtkThreshold.THRESHOLD_BETWEEN)
-    t.SetAllScalars(1)
-    t.Update()
-    return t.GetOutput()
-
-
-def cscan_tile(cscan, plate_bounds):
-    """The projected delamination map (cscan.vtu) below the plies' grid, at z = 0."""
-    out = vtkUnstructuredGrid()
-    if cscan is None or cscan.GetNumberOfCells() == 0:
+    names = [n for n, blk in named_blocks(interfaces).items() if blk.GetNumberOfCells() > 0] if interfaces else []
+    for i, name in enumerate(names):
+        label(name.replace("_", " "), INTERFACES_X * px + (i % COLUMNS) * px, i // COLUMNS)
+    if cscan is not None and cscan.GetNumberOfCells() > 0:
+        label("C-scan: shallowest depth", CSCAN_X * px, 0)
+    if append.GetNumberOfInputConnections(0) == 0:
         return out
-    px, py = _tile_pitch(plate_bounds)
-    zb = cscan.GetBounds()
-    moved = _moved(cscan, (COLUMNS + 0.5) * px, -4 * py, -zb[5])
-    append = vtkAppendFilter()
-    append.AddInputData(moved)
     append.Update()
     out.ShallowCopy(append.GetOutput())
     return out
 
 
-def colour_array(data, preferred=("damage", "delamination", "delaminated", "depth")):
-    """(association, name) of the array to colour an interface or C-scan data set by: the first
-    array whose name contains one of `preferred`, else the first array; None when it has none."""
+def colour_array(data, preferred=CSCAN_ARRAYS):
+    """(association, name) of the array to colour a data set by: the first array whose name
+    contains one of `preferred` (in that order), else the first scalar array; None when none."""
     for assoc, attr in (("CELLS", data.GetCellData()), ("POINTS", data.GetPointData())):
         for word in preferred:
             for i in range(attr.GetNumberOfArrays()):
