@@ -16,6 +16,10 @@ independently with VTK's XML reader:
     plies; with interfaces.pvd (two interfaces, damage 0 ... 1 across each) and cscan.vtu added,
     7: the C-scan left of the plies (its delaminated patch), the two interfaces right of them, drawn
     with the blue-to-red damage ramp.
+  - the ParaView front end, driven through a stand-in for paraview.simple that records the
+    Programmable Filters it creates (ParaView itself cannot be installed beside python3-vtk9 on
+    Debian 12): each filter's script, run on the same inputs, gives the same number of cells as
+    the pipeline function the VTK front end calls. This catches a broken script string or call.
 The interface and C-scan files are written here in the documented layout (docs/outputs.md):
 interfaces.pvd -> one .vtm per time with one named block per interface, point data `damage`;
 cscan.vtu with cell data `depth_shallowest` (NaN where nothing is delaminated).
@@ -164,6 +168,63 @@ def add_interfaces_and_cscan(folder, times):
     w.Write()
 
 
+def check_paraview_scripts(paraview_view, pipeline, folder):
+    import types
+    from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkUnstructuredGrid
+
+    class Proxy:
+        """Accepts any property and call, as a ParaView proxy would."""
+        def __init__(self, **props):
+            self.__dict__.update(props)
+            self.TimestepValues = []
+
+        def __getattr__(self, name):
+            return Proxy()
+
+        def __call__(self, *args, **kwargs):
+            return Proxy()
+
+    filters = []
+
+    def programmable_filter(**props):
+        f = Proxy(**props)
+        filters.append(f)
+        return f
+
+    simple = types.SimpleNamespace(ProgrammableFilter=programmable_filter,
+                                   servermanager=types.SimpleNamespace(Fetch=lambda proxy: vtkUnstructuredGrid()))
+    for name in ("GetActiveViewOrCreate", "PVDReader", "Hide", "GetAnimationScene", "Show", "ColorBy",
+                 "GetColorTransferFunction", "XMLUnstructuredGridReader", "UpdatePipeline", "Render"):
+        setattr(simple, name, Proxy())
+    result = paraview_view.find_result(folder)
+    paraview_view.render_paraview(simple, result)
+    t, frame = paraview_view.read_frame(result["frames"])
+    interfaces = paraview_view.read_frame(result["interfaces"], t)[1]
+    cscan = paraview_view._read_vtk_xml(result["cscan"])
+    bounds = pipeline.plate_bounds(frame)
+    expected = {"ply damage": ([frame], pipeline.ply_tiles(frame)),
+                "interface damage": ([interfaces, frame], pipeline.interface_tiles(interfaces, bounds)),
+                "C-scan": ([cscan, frame], pipeline.cscan_tile(cscan, bounds)),
+                "labels": ([frame, interfaces, cscan], pipeline.tile_labels(frame, interfaces, cscan))}
+    check(sorted(f.registrationName for f in filters) == sorted(expected),
+          "ParaView front end builds the filters %s" % sorted(f.registrationName for f in filters))
+    for f in filters:
+        inputs, want = expected[f.registrationName]
+
+        class Filter:
+            def GetInputDataObject(self, port, index):
+                return inputs[index]
+
+            def GetOutputDataObject(self, port):
+                return out
+
+        out = vtkPolyData() if f.OutputDataSetType == "vtkPolyData" else vtkUnstructuredGrid()
+        exec(f.Script, {"self": Filter()})
+        check(out.GetNumberOfCells() == want.GetNumberOfCells() > 0,
+              "ParaView filter '%s' gives %d cells, the VTK pipeline %d" % (f.registrationName, out.GetNumberOfCells(),
+                                                                          want.GetNumberOfCells()))
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--plyimpact", required=True)
@@ -226,6 +287,8 @@ def main():
             blue = sum(1 for p in ramp if p[2] > 0.8 and p[0] < 0.2 and p[1] < 0.2)
             check(red > 20 and blue > 20, "interface tile %s: damage ramp from blue (0) to red (1), %d blue, %d red "
                   "pixels" % (run, blue, red))
+
+    check_paraview_scripts(paraview_view, pipeline, full)
 
     if failures:
         print("%d check(s) failed" % len(failures))
