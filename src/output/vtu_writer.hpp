@@ -15,6 +15,8 @@ namespace plyimpact::output {
 // Block compression of the appended data (lossless; VTK's readers and ParaView read all three).
 enum class Compression { none, zlib, lz4 };
 
+// Uncompressed unless asked: the run's frames take the scene's output.compression (zlib by default,
+// docs/outputs.md has the measured sizes and times); mesh exports stay plain.
 struct WriteOptions {
   Compression compression = Compression::none;
   bool compress = false;  // shorthand for compression = zlib
