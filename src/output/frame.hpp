@@ -16,13 +16,15 @@ struct Field {
   int components = 1;         // 1 scalar, 3 vector, 6 symmetric tensor (xx yy zz xy yz zx), 9 ...
   std::vector<double> values; // (count, components) row-major
   std::vector<std::string> component_names;  // optional, e.g. {"xx","yy","zz","xy","yz","zx"}
-  std::string unit;           // optional, e.g. "Pa", "1" (dimensionless): listed in the file's `units`
+  // Optional, e.g. "Pa", "1" (dimensionless): listed in the file's `units`. The "= {}" keeps
+  // aggregate initializations that stop before it free of -Wmissing-field-initializers.
+  std::string unit = {};
 };
 
 struct IntField {
   std::string name;
   std::vector<std::int32_t> values;  // one per cell or point
-  std::string unit;                  // optional, as Field::unit
+  std::string unit = {};             // optional, as Field::unit
 };
 
 // A field-data array of strings (one tuple per entry): legends ("0: alive"), notes, names.
