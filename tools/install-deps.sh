@@ -7,6 +7,9 @@ packages=(
   cmake ninja-build g++ pkg-config
   libgmsh-dev libeigen3-dev libvtk9-dev libyaml-cpp-dev libgtest-dev libbenchmark-dev
   gnuplot-nox   # PNG plots (plyimpact plot, dcb-reduce), headless: pngcairo terminal, no X11
+  # tools/paraview_view.py renders with VTK's Python when ParaView is absent; Debian's VTK needs an
+  # X server even off screen, so the test that renders it headlessly runs under xvfb-run (needs xauth).
+  python3-vtk9 xvfb xauth
 )
 
 missing=()

@@ -189,9 +189,11 @@ struct ControlSpec {
 };
 
 struct OutputSpec {
+  enum class Compression { None, ZLib, LZ4 };
   double interval = 0;          // s between VTU frames; 0 = 20 frames over the run
   double history_interval = 0;  // s between history.csv rows; 0 = 1000 rows over the run
   double restart_interval = 0;  // s between restart dumps (*DATABASE_BINARY_D3DUMP); 0 = only at the end
+  Compression compression = Compression::ZLib;  // of the VTU frames (lossless)
 };
 
 // One ply of a laminate, bottom (z = 0) to top.

@@ -56,12 +56,18 @@ ControlSpec read_control(const Reader& r) {
 }
 
 OutputSpec read_output(const Reader& r) {
-  r.require_map("a mapping with optional interval, history_interval and restart_interval (times)");
-  r.allow_keys({"interval", "history_interval", "restart_interval"});
+  r.require_map("a mapping with optional interval, history_interval and restart_interval (times) and compression");
+  r.allow_keys({"interval", "history_interval", "restart_interval", "compression"});
   OutputSpec o;
   o.interval = r.quantity_or("interval", u::time, 0.0, Limits::non_negative("output interval"));
   o.history_interval = r.quantity_or("history_interval", u::time, 0.0, Limits::non_negative("history interval"));
   o.restart_interval = r.quantity_or("restart_interval", u::time, 0.0, Limits::non_negative("restart interval"));
+  if (const auto c = r.find("compression")) {
+    const std::string name = c->as_choice({"zlib", "lz4", "none"});
+    o.compression = name == "zlib"  ? OutputSpec::Compression::ZLib
+                    : name == "lz4" ? OutputSpec::Compression::LZ4
+                                    : OutputSpec::Compression::None;
+  }
   return o;
 }
 

@@ -34,7 +34,9 @@ PvdSeries::PvdSeries(fs::path directory, std::string name)
   }
 }
 
-void PvdSeries::add(double time, const std::string& vtu_file_name) {
+void PvdSeries::add(double time, const std::string& vtu_file_name) { add(time, vtu_file_name, 0, ""); }
+
+void PvdSeries::add(double time, const std::string& vtu_file_name, int part, const std::string& block_name) {
   if (!std::isfinite(time)) {
     throw RunError(msg() << "PVD series '" << path().string() << "': frame '" << vtu_file_name
                          << "' has non-finite time " << time);
@@ -45,7 +47,11 @@ void PvdSeries::add(double time, const std::string& vtu_file_name) {
                          << vtu_file_name << "' must be a path relative to '"
                          << directory_.string() << "'");
   }
-  frames_.push_back({time, file.generic_string()});
+  if (part < 0) {
+    throw RunError(msg() << "PVD series '" << path().string() << "': frame '" << vtu_file_name
+                         << "' has negative part " << part);
+  }
+  frames_.push_back({time, file.generic_string(), part, block_name});
 }
 
 void PvdSeries::write() const {
@@ -63,7 +69,13 @@ void PvdSeries::write() const {
     std::snprintf(time, sizeof time, "%.17g", e.time);
     xml += "    <DataSet timestep=\"";
     xml += time;
-    xml += "\" group=\"\" part=\"0\" file=\"";
+    xml += "\" group=\"\" part=\"";
+    xml += std::to_string(e.part);
+    if (!e.name.empty()) {
+      xml += "\" name=\"";
+      append_xml_escaped(xml, e.name);
+    }
+    xml += "\" file=\"";
     append_xml_escaped(xml, e.file);
     xml += "\"/>\n";
   }

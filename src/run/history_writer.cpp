@@ -16,7 +16,7 @@ std::vector<std::string> history_columns(const model::Model& model, const solver
   const solver::Energies own;
   std::vector<std::string> cols = {"time", "dt"};
   for (const auto& t : own.terms) cols.push_back(t.column);
-  for (const char* c : {"total_energy", "energy_ratio", "dt_element"}) cols.push_back(c);
+  for (const char* c : {"total_energy", "energy_ratio", "dt_controlling_element"}) cols.push_back(c);
   for (int set : model.constrained_sets)
     for (const char* c : {"_fx", "_fy", "_fz"}) cols.push_back("reaction_" + model.node_sets[set].name + c);
   if (solver) {

@@ -29,6 +29,8 @@ namespace {
 struct DataSetEntry {
   double time;
   std::string file;
+  int part = 0;
+  std::string name;
 };
 
 // Parses the collection with a real XML parser; fails the test if the file is not well-formed.
@@ -62,14 +64,15 @@ std::vector<DataSetEntry> parse_pvd(const fs::path& p) {
   for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
     vtkXMLDataElement* ds = collection->GetNestedElement(i);
     EXPECT_STREQ(ds->GetName(), "DataSet");
-    EXPECT_STREQ(ds->GetAttribute("part"), "0");
     const char* timestep = ds->GetAttribute("timestep");
     const char* file = ds->GetAttribute("file");
-    if (timestep == nullptr || file == nullptr) {
-      ADD_FAILURE() << "DataSet without timestep or file";
+    const char* part = ds->GetAttribute("part");
+    if (timestep == nullptr || file == nullptr || part == nullptr) {
+      ADD_FAILURE() << "DataSet without timestep, part or file";
       continue;
     }
-    entries.push_back({std::strtod(timestep, nullptr), file});
+    const char* name = ds->GetAttribute("name");
+    entries.push_back({std::strtod(timestep, nullptr), file, std::atoi(part), name ? name : ""});
   }
   return entries;
 }
@@ -104,6 +107,27 @@ TEST(PvdSeries, ListsFramesWithExactTimesAndRelativeFilesAndRewrites) {
   EXPECT_EQ(entries[2].file, "frames/plate & co_000002.vtu");
   EXPECT_EQ(series.size(), 3u);
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"plate.pvd"});  // no temporaries left
+}
+
+// Two named parts per time: what ParaView's PVD reader turns into a two-block multiblock per time.
+TEST(PvdSeries, NamedPartsPerTime) {
+  ScratchDir dir;
+  PvdSeries series(dir.path(), "plate");
+  for (int k = 0; k < 2; ++k) {
+    const double t = 1e-5 * k;
+    series.add(t, "plate_000" + std::to_string(k) + ".vtu", 0, "bodies");
+    series.add(t, "plate_rigid_000" + std::to_string(k) + ".vtu", 1, "rigid <tup> & co");
+  }
+  series.write();
+  const auto entries = parse_pvd(series.path());
+  ASSERT_EQ(entries.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    EXPECT_EQ(entries[i].time, 1e-5 * double(i / 2));
+    EXPECT_EQ(entries[i].part, int(i % 2));
+    EXPECT_EQ(entries[i].name, i % 2 == 0 ? "bodies" : "rigid <tup> & co");
+  }
+  EXPECT_EQ(entries[3].file, "plate_rigid_0001.vtu");
+  EXPECT_THROW(series.add(0.0, "a.vtu", -1, "x"), RunError);
 }
 
 TEST(PvdSeries, EmptySeriesIsValid) {

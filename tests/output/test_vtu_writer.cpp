@@ -1,5 +1,6 @@
 // write_vtu: what VTK's own reader gets back is bit-for-bit the Frame that was written (raw binary
-// appended data), in both the raw and zlib modes; bad frames and bad paths fail loudly and cleanly.
+// appended data), uncompressed, zlib and lz4, hexahedra and quadrilaterals, with its field data;
+// bad frames and bad paths fail loudly and cleanly.
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <vtkCellData.h>
@@ -12,6 +13,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
@@ -26,9 +28,11 @@
 
 namespace fs = std::filesystem;
 using plyimpact::RunError;
+using plyimpact::output::Compression;
 using plyimpact::output::Field;
 using plyimpact::output::Frame;
 using plyimpact::output::IntField;
+using plyimpact::output::StringField;
 using plyimpact::output::write_vtu;
 using plyimpact::output::WriteOptions;
 
@@ -66,6 +70,23 @@ Frame two_hex_frame() {
   f.cell_fields.push_back({"stress", 6, awkward_values(12, -3e9), voigt});
   f.point_int_fields.push_back({"node_id", {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, -11}});
   f.cell_int_fields.push_back({"ply_id", {3, 2147483647}});
+  return f;
+}
+
+// The same lattice with two hexahedra and, after them, a quadrilateral on the top face; units and
+// field-data strings (one with a character XML must escape).
+Frame mixed_frame() {
+  Frame f = two_hex_frame();
+  f.quad_connectivity = {6, 7, 10, 9};
+  f.point_fields[0].unit = "K";
+  f.cell_fields[0].values.push_back(0.5);
+  f.cell_fields[0].unit = "1";
+  f.cell_fields[1].values.insert(f.cell_fields[1].values.end(), {1.0, 2.0, 3.0});
+  f.cell_fields[2].values.insert(f.cell_fields[2].values.end(), 6, -1.0);
+  f.cell_fields[2].unit = "Pa";
+  f.cell_int_fields[0].values.push_back(-1);
+  f.field_strings.push_back({"legend_ply_id", {"3: ply <three> & more", "-1: none"}});
+  f.field_strings.push_back({"notes", {"a single note"}});
   return f;
 }
 
@@ -116,11 +137,14 @@ void expect_same_as_frame(vtkUnstructuredGrid* grid, const Frame& f) {
   ASSERT_EQ(static_cast<std::size_t>(grid->GetNumberOfCells()), f.num_cells());
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
-    EXPECT_EQ(grid->GetCellType(c), VTK_HEXAHEDRON);
+    const bool hex = c < static_cast<vtkIdType>(f.num_hexes());
+    EXPECT_EQ(grid->GetCellType(c), hex ? VTK_HEXAHEDRON : VTK_QUAD);
     grid->GetCellPoints(c, ids);
-    ASSERT_EQ(ids->GetNumberOfIds(), 8);
-    for (vtkIdType n = 0; n < 8; ++n) {
-      EXPECT_EQ(ids->GetId(n), f.hex_connectivity[8 * c + n]) << "cell " << c << " node " << n;
+    ASSERT_EQ(ids->GetNumberOfIds(), hex ? 8 : 4);
+    for (vtkIdType n = 0; n < ids->GetNumberOfIds(); ++n) {
+      const std::int64_t want = hex ? f.hex_connectivity[8 * c + n]
+                                    : f.quad_connectivity[4 * (c - static_cast<vtkIdType>(f.num_hexes())) + n];
+      EXPECT_EQ(ids->GetId(n), want) << "cell " << c << " node " << n;
     }
   }
   for (const Field& field : f.point_fields) expect_field(grid->GetPointData(), field);
@@ -136,9 +160,28 @@ void expect_same_as_frame(vtkUnstructuredGrid* grid, const Frame& f) {
   ASSERT_NE(time, nullptr);
   ASSERT_EQ(time->GetNumberOfValues(), 1);
   EXPECT_EQ(time->GetValue(0), f.time);
+
+  for (const StringField& field : f.field_strings) {
+    auto* a = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray(field.name.c_str()));
+    ASSERT_NE(a, nullptr) << field.name;
+    ASSERT_EQ(static_cast<std::size_t>(a->GetNumberOfValues()), field.values.size()) << field.name;
+    for (std::size_t i = 0; i < field.values.size(); ++i) EXPECT_EQ(a->GetValue(vtkIdType(i)), field.values[i]);
+  }
 }
 
-class VtuRoundTrip : public ::testing::TestWithParam<bool> {};
+// The field data `units`: "<array>: <unit>" for exactly the arrays that name a unit.
+std::vector<std::string> units_of(vtkUnstructuredGrid* grid) {
+  std::vector<std::string> out;
+  if (auto* a = vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("units")))
+    for (vtkIdType i = 0; i < a->GetNumberOfValues(); ++i) out.push_back(a->GetValue(i));
+  return out;
+}
+
+class VtuRoundTrip : public ::testing::TestWithParam<Compression> {};
+
+const char* compressor_name(Compression c) {
+  return c == Compression::zlib ? "vtkZLibDataCompressor" : c == Compression::lz4 ? "vtkLZ4DataCompressor" : "";
+}
 
 }  // namespace
 
@@ -147,22 +190,55 @@ TEST_P(VtuRoundTrip, ReaderGetsBackEveryValueExactly) {
   const Frame frame = two_hex_frame();
   const fs::path file = dir.path() / "plate_000001.vtu";
   WriteOptions options;
-  options.compress = GetParam();
+  options.compression = GetParam();
   write_vtu(frame, file, options);
 
   expect_same_as_frame(read_vtu(file), frame);
+  EXPECT_TRUE(units_of(read_vtu(file)).empty());  // no field names a unit: no `units` array
 
-  // Appended raw binary with 64-bit block headers (toolchain V6); zlib only when asked for.
+  // Appended raw binary with 64-bit block headers (toolchain V6); compressed only when asked for.
   const std::string text = slurp(file);
   EXPECT_NE(text.find("header_type=\"UInt64\""), std::string::npos);
   EXPECT_NE(text.find("<AppendedData encoding=\"raw\">"), std::string::npos);
   EXPECT_EQ(text.find("format=\"ascii\""), std::string::npos);
-  EXPECT_EQ(text.find("vtkZLibDataCompressor") != std::string::npos, options.compress);
+  if (GetParam() == Compression::none) {
+    EXPECT_EQ(text.find("compressor="), std::string::npos);
+  } else {
+    EXPECT_NE(text.find(compressor_name(GetParam())), std::string::npos);
+  }
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"plate_000001.vtu"});
 }
 
-INSTANTIATE_TEST_SUITE_P(RawAndZlib, VtuRoundTrip, ::testing::Values(false, true),
-                         [](const auto& info) { return info.param ? "zlib" : "raw"; });
+TEST_P(VtuRoundTrip, HexahedraThenQuadrilateralsWithUnitsAndFieldStrings) {
+  ScratchDir dir;
+  const Frame frame = mixed_frame();
+  WriteOptions options;
+  options.compression = GetParam();
+  write_vtu(frame, dir.path() / "mixed.vtu", options);
+  const auto grid = read_vtu(dir.path() / "mixed.vtu");
+  expect_same_as_frame(grid, frame);
+  ASSERT_EQ(grid->GetNumberOfCells(), 3);
+  EXPECT_EQ(grid->GetCellType(0), VTK_HEXAHEDRON);
+  EXPECT_EQ(grid->GetCellType(1), VTK_HEXAHEDRON);
+  EXPECT_EQ(grid->GetCellType(2), VTK_QUAD);
+  EXPECT_EQ(units_of(grid), (std::vector<std::string>{"temperature: K", "damage: 1", "stress: Pa"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(Compressions, VtuRoundTrip,
+                         ::testing::Values(Compression::none, Compression::zlib, Compression::lz4),
+                         [](const auto& info) {
+                           return info.param == Compression::zlib  ? "zlib"
+                                  : info.param == Compression::lz4 ? "lz4"
+                                                                   : "raw";
+                         });
+
+TEST(VtuWriter, CompressShorthandIsZlib) {
+  ScratchDir dir;
+  WriteOptions options;
+  options.compress = true;
+  write_vtu(two_hex_frame(), dir.path() / "z.vtu", options);
+  EXPECT_NE(slurp(dir.path() / "z.vtu").find("vtkZLibDataCompressor"), std::string::npos);
+}
 
 TEST(VtuWriter, EmptyFrameIsAValidFile) {
   ScratchDir dir;
@@ -250,5 +326,20 @@ TEST(VtuWriter, OtherMalformedFramesThrow) {
   f = two_hex_frame();
   f.cell_fields[0].components = 0;
   expect_rejected(f, "zero components");
+  f = mixed_frame();
+  f.quad_connectivity.pop_back();
+  expect_rejected(f, "quad connectivity not a multiple of 4");
+  f = mixed_frame();
+  f.quad_connectivity[2] = 12;
+  expect_rejected(f, "quad node index out of range");
+  f = two_hex_frame();
+  f.quad_connectivity = {0, 1, 2, 3};
+  expect_rejected(f, "a quad without its cell field values");
+  f = mixed_frame();
+  f.field_strings.push_back({"notes", {}});
+  expect_rejected(f, "repeated field-data name");
+  f = mixed_frame();
+  f.field_strings.push_back({"TimeValue", {}});
+  expect_rejected(f, "reserved field-data name");
   EXPECT_TRUE(dir.entries().empty());
 }

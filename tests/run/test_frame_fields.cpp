@@ -127,6 +127,11 @@ TEST_P(FrameFields, WrittenFieldsOfAPulledFortyFiveDegreePlyMatchHandValues) {
   EXPECT_NEAR(a[1], sn, 2e-5);
   EXPECT_NEAR(a[2], 0.0, 2e-5);
 
+  // The ply's angle and index as given: the part's beta of 45 degrees (the fibre axis at t = 0,
+  // atan2 of a unit vector built from the angle: 1e-9 degree), no laminate ply (index 0).
+  EXPECT_NEAR(f.cell("ply_angle", 0)[0], 45.0, 1e-9);
+  EXPECT_EQ(f.cell("ply_index", 0)[0], 0.0);
+
   // Stress: uniaxial along x, off-axis modulus times the strain.
   const auto sigma = f.cell("stress", 0);
   const double sx = sigma[0];

@@ -1,4 +1,5 @@
 // Columns of history.csv as a user reads them, against independent values:
+//  - dt_controlling_element: an element id of the scene (1 ... number of elements).
 //  - reaction_<set>: a steel block (10 mm cube, 2 x 2 x 2 elements) on a fixed base, with gravity
 //    switched on at t = 0. The support must carry the whole weight M g (the base nodes' own weight
 //    included) on average: the block rings about its static state, and the mean of R over [0, T]
@@ -81,6 +82,13 @@ TEST(History, ReactionOfAGravityLoadedBlockAveragesItsWeight) {
   // Nothing acts sideways.
   for (const char* c : {"reaction_base_fx", "reaction_base_fy"})
     for (double v : h.at(c)) EXPECT_NEAR(v, 0.0, 1e-9 * M * g) << c;
+  // The element that controls the step: an element id of the block (1 ... 8), under its own name.
+  EXPECT_EQ(h.count("dt_element"), 0u);
+  for (double id : h.at("dt_controlling_element")) {
+    EXPECT_EQ(id, std::round(id));
+    EXPECT_GE(id, 1.0);
+    EXPECT_LE(id, 8.0);
+  }
 }
 
 std::map<std::string, std::vector<double>> drop_history(const test::ScratchDir& dir) {
