@@ -36,6 +36,8 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_rel(s.control.dt_min_ratio, 1.0e-4);
   expect_rel(s.control.hourglass_warn_ratio, 0.05);
   EXPECT_EQ(s.control.max_cycles, 100000);
+  EXPECT_EQ(s.control.max_elements, 5000000);
+  EXPECT_EQ(s.control.cycle_limit, 200000000);
   EXPECT_EQ(s.control.threads, 2);
   expect_rel(s.output.interval, 1e-6);
   expect_rel(s.output.history_interval, 1e-7);
