@@ -25,7 +25,7 @@ double axis_elements(const AxisSpec& a) {
 }
 
 std::string count_text(double n) {
-  return n < 1e7 ? std::string(msg() << std::llround(n)) : std::string(msg() << n);
+  return n < 1e9 ? std::string(msg() << std::llround(n)) : std::string(msg() << n);
 }
 
 struct Factor {
@@ -72,7 +72,8 @@ MeshSizeEstimate impactor_estimate(const config::ImpactorSpec& s) {
   switch (s.shape) {
     case Shape::Sphere: e.elements = n * n * n + 6 * n * n * k_sphere; break;
     case Shape::HemisphericalCylinder:
-      e.elements = n * n * n / 2 + 3 * n * n * k_sphere + (n * n + 4 * n * k_sphere) * count(s.length - r);
+      // Nose: a core N x N x N (its meridians have N elements too) under five N x N x K shells.
+      e.elements = n * n * n + 5 * n * n * k_sphere + (n * n + 4 * n * k_sphere) * count(s.length - r);
       break;
     case Shape::FlatCylinder: e.elements = (n * n + 4 * n * k_ring) * count(s.length); break;
     case Shape::Cube: {
@@ -143,7 +144,8 @@ void require_mesh_fits(const config::Scene& scene, const MeshSizeEstimate& e, do
                    << count_text(e.nodes) << " nodes (" << e.account << "), needing about " << gib(e.bytes)
                    << " of memory; found " << (too_many ? "more elements than the limit" : "more than this machine holds")
                    << "; allowed at most " << count_text(max_elements) << " elements (control.max_elements"
-                   << (limit_given ? ")" : ", default") << (limit_given || memory_bytes <= 0 ? "" : " and 80 % of the machine's " + gib(memory_bytes))
+                   << (limit_given ? ")" : ", default)")
+                   << (limit_given || memory_bytes <= 0 ? "" : " and 80 % of the machine's " + gib(memory_bytes))
                    << ": coarsen " << e.key << " (or the other sizes named), or raise control.max_elements");
 }
 

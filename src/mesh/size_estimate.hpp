@@ -18,11 +18,12 @@ struct MeshSizeEstimate {
   std::string account;             // how the count arises: "1200 x 800 in-plane x 24 layers (24 plies x 1 per ply)"
 };
 
-// Memory per element and per node of the largest phase (gmsh's mesh plus our copy while meshing;
-// the model and solver state while running), measured on laminate meshes of 0.2-1 million elements
-// (docs/commands.md, "Input limits").
-inline constexpr double kBytesPerElement = 1100;
-inline constexpr double kBytesPerNode = 700;
+// Memory per element and per node of meshing and building the run (gmsh's mesh, our mesh, model
+// and solver state). Measured: `plyimpact check` of configs/sphere_on_plate.yaml at 0.20 and 0.82
+// million elements (1.13 nodes per element) peaked at 0.26 and 0.86 GB, 0.98 kB per element with
+// its nodes; these figures give 1.15 kB, a margin for the run's output buffers.
+inline constexpr double kBytesPerElement = 700;
+inline constexpr double kBytesPerNode = 400;
 // Element limit when the scene gives no control.max_elements.
 inline constexpr double kDefaultMaxElements = 2e7;
 

@@ -183,7 +183,7 @@ const std::vector<RangeCase> kRangeCases = {
      {"scenes/holes.yaml:8:8: materials.steel.E: 1e+300 Pa is outside the plausible range of an elastic modulus",
       "allowed E with a magnitude in [1000, 1e+13] Pa"}},
     {"huge_velocity", kBoxes, "velocity: [0, 0, -5]", "velocity: [0, 0, -1e300]",
-     {"scenes/holes.yaml:20:39: initial_velocity[0].velocity[2]: -1e+300 m/s is outside the plausible range of a "
+     {"scenes/holes.yaml:20:34: initial_velocity[0].velocity[2]: -1e+300 m/s is outside the plausible range of a "
       "velocity", "allowed velocity[2] with a magnitude of at most 100000 m/s"}},
     {"huge_box", kBoxes, "size: [0.1, 0.01, 0.01]", "size: [0.1, 0.01, 1e20]",
      {"scenes/holes.yaml:17:25: mesh.boxes[0].size[2]: 1e+20 m is outside the plausible range of a size"}},
@@ -194,7 +194,7 @@ const std::vector<RangeCase> kRangeCases = {
      {"scenes/holes.yaml:39:13: impactor.velocity: 1e+300 m/s is outside the plausible range of a velocity"}},
     {"huge_strength_scene_units", kLaminate, "  steel: {card: MAT_001, RO: 7.85e-9, E: 210 GPa, PR: 0.3}\n",
      "  steel: {card: MAT_003, RO: 7.85e-9, E: 210 GPa, PR: 0.3, SIGY: 1e9}\n",
-     {"scenes/holes.yaml:20:65: materials.steel.SIGY: 1e+15 Pa is outside the plausible range of a strength",
+     {"scenes/holes.yaml:20:66: materials.steel.SIGY: 1e+15 Pa is outside the plausible range of a strength",
       "found '1e9' (= 1e+15 SI)"}},
 };
 
@@ -286,7 +286,7 @@ TEST(InputHoles, OversizedMeshesAreRefusedBeforeMeshing) {
                                "  element_size: 0.001\n")),
              {"scenes/holes.yaml:30:17: laminate.element_size: the mesh would have about 4.8e+09 elements",
               "(40000 x 30000 in-plane x 4 layers (4 plies x 1 per ply)",
-              "allowed at most 20000000 elements (control.max_elements, default",
+              "allowed at most 20000000 elements (control.max_elements, default) and 80 % of the machine's",
               "raise control.max_elements"});
   expect_all(mesh_error(edited(kLaminate, "stacking: \"[0/90]s\"", "stacking: \"[0]99999\"")),
              {"scenes/holes.yaml:27:13: laminate.stacking: the mesh would have about", "x 99999 layers (99999 plies"});

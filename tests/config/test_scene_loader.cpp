@@ -51,7 +51,7 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_rel(e.E, 2.1e11);
   expect_rel(e.PR, 0.3);
   EXPECT_EQ(steel.where.key_path, "materials.steel");
-  EXPECT_EQ(steel.where.line, 16);
+  EXPECT_EQ(steel.where.line, 18);
   EXPECT_EQ(steel.where.column, 5);
 
   const cfg::MaterialSpec& ply = s.materials[1];
@@ -74,7 +74,7 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_vec(o.axes.V, {0, 0, 1});
   expect_rel(o.axes.BETA, 0.5);
   EXPECT_EQ(ply.where.file, kScenes + "good_full.yaml");
-  EXPECT_EQ(ply.where.line, 21);
+  EXPECT_EQ(ply.where.line, 23);
   EXPECT_EQ(ply.where.column, 5);
 
   ASSERT_EQ(s.sections.size(), 2u);
@@ -114,7 +114,7 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_vec(s.boxes[1].size, {0.1, 0.01, 0.00025});
   EXPECT_EQ(s.boxes[1].elements, (std::array<int, 3>{50, 5, 1}));
   EXPECT_EQ(s.boxes[1].where.key_path, "mesh.boxes[1]");
-  EXPECT_EQ(s.boxes[1].where.line, 55);
+  EXPECT_EQ(s.boxes[1].where.line, 57);
   EXPECT_EQ(s.boxes[1].where.column, 7);
 
   using K = cfg::NodeSetSpec::Kind;
