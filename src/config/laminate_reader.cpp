@@ -528,4 +528,6 @@ void read_impactor(const Reader& r, Scene& scene) {
   scene.impactor = std::move(imp);
 }
 
+void read_tiebreak_law_keys(const Reader& r, cohesive::TractionLawParams& law) { read_law_keys(r, law); }
+
 }  // namespace plyimpact::config::detail

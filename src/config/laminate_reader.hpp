@@ -13,5 +13,8 @@ namespace plyimpact::config::detail {
 void read_laminate(const Reader& r, Scene& scene);
 // Needs scene.laminate (if any) already read: the impact point comes from it.
 void read_impactor(const Reader& r, Scene& scene);
+// The tiebreak card keys (OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS) of `r` on top of
+// `law`, as the laminate's interfaces read them; a tiebreak contact reads the same card.
+void read_tiebreak_law_keys(const Reader& r, cohesive::TractionLawParams& law);
 
 }  // namespace plyimpact::config::detail

@@ -288,6 +288,10 @@ struct ContactSpec {
   int BSORT = 10;         // bucket sort at least every BSORT cycles
   int ENMASS = 0;         // eroding: 0 drop nodes left without elements, 1 keep them as mass points
   InitialPenetration initial_penetration = InitialPenetration::Move;
+  // Tiebreak (type tiebreak_surface_to_surface): surface_a is the slave side, surface_b the master
+  // side; the law of card 4 and the contact thicknesses of eq. 7.40 (0: the elements' depth).
+  std::optional<cohesive::TractionLawParams> tiebreak;
+  double SST = 0, MST = 0;  // m
   SourceLocation where;
 };
 

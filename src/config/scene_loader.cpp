@@ -636,6 +636,29 @@ std::vector<std::string> read_surface(const Reader& r, const std::vector<std::st
   return out;
 }
 
+// The tiebreak card (OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN, FS) and the contact
+// thicknesses SST, MST of a tiebreak contact; surfaces [slave, master] must both be deformable parts.
+void read_tiebreak_contact(const Reader& c, const Scene& scene, ContactSpec& spec) {
+  cohesive::TractionLawParams law;
+  detail::read_tiebreak_law_keys(c, law);
+  const SourceLocation w = c.where();
+  cohesive::require_valid_traction_law(law, msg() << w.file << ":" << w.line << ":" << w.column << ": " << w.key_path);
+  spec.tiebreak = law;
+  for (const char* key : {"SOFT", "SOFSCL", "SLSFAC", "SFS", "SFM", "FD", "DC", "VDC", "PENMAX", "MAXPAR", "DTSTIF",
+                          "BSORT", "ENMASS", "initial_penetration"})
+    if (c.has(key)) c.at(key, "").fail("a penalty-contact field on a tiebreak contact, which does not use it",
+                                       "the tiebreak card (OPTION, NFLS, SFLS, PARAM, ERATEN, ERATES, CN, CT2CN), "
+                                       "FS and the contact thicknesses SST, MST");
+  spec.SST = c.quantity_or("SST", u::length, 0.0, Limits::non_negative("SST"));
+  spec.MST = c.quantity_or("MST", u::length, 0.0, Limits::non_negative("MST"));
+  if (const auto s = c.find("surfaces"))
+    for (const Reader& side : s->items())
+      for (const auto& name : read_surface(side, body_names(scene)))
+        if (name == "impactor" || is_rigid_part(scene, name))
+          side.fail("part '" + name + "' is rigid: a tiebreak ties deformable surfaces",
+                    "[slave, master]: deformable part names");
+}
+
 std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
   const char* shape = "{name, type, surfaces: [a, b] | parts: [...], SOFT, SOFSCL, SLSFAC, SFS, SFM, FS, FD, DC, VDC, ...}";
   r.require_list(std::string("a list of ") + shape, false);
@@ -644,16 +667,24 @@ std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
   for (const Reader& c : r.items()) {
     c.require_map(shape);
     c.allow_keys({"name", "type", "surfaces", "parts", "SOFT", "SOFSCL", "SLSFAC", "SFS", "SFM", "FS", "FD", "DC",
-                  "VDC", "PENMAX", "MAXPAR", "DTSTIF", "BSORT", "ENMASS", "initial_penetration"});
+                  "VDC", "PENMAX", "MAXPAR", "DTSTIF", "BSORT", "ENMASS", "initial_penetration", "OPTION", "NFLS",
+                  "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "SST", "MST"});
     ContactSpec spec;
     spec.where = c.where();
     spec.name = c.at("name", "a contact name").as_name();
     for (const auto& other : out)
       if (other.name == spec.name) c.at("name", "").fail("duplicate contact name", "a name not used by another contact");
     const std::string type = c.at("type", "automatic_surface_to_surface, automatic_single_surface, "
-                                          "eroding_surface_to_surface or eroding_single_surface")
+                                          "eroding_surface_to_surface, eroding_single_surface or "
+                                          "tiebreak_surface_to_surface")
                                  .as_choice({"automatic_surface_to_surface", "automatic_single_surface",
-                                             "eroding_surface_to_surface", "eroding_single_surface"});
+                                             "eroding_surface_to_surface", "eroding_single_surface",
+                                             "tiebreak_surface_to_surface"});
+    if (type == "tiebreak_surface_to_surface") read_tiebreak_contact(c, scene, spec);
+    else
+      for (const char* key : {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "SST", "MST"})
+        if (c.has(key)) c.at(key, "").fail("a tiebreak field on a contact without a tiebreak",
+                                           "type: tiebreak_surface_to_surface to tie the surfaces");
     spec.eroding = type.rfind("eroding", 0) == 0;
     spec.type = type.find("single") != std::string::npos ? ContactSpec::Type::SingleSurface
                                                          : ContactSpec::Type::SurfaceToSurface;

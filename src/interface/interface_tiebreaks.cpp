@@ -52,7 +52,9 @@ const char* option_name(cohesive::TiebreakOption o) {
   return "";
 }
 
-std::string law_text(const cohesive::TractionLawParams& p) {
+}  // namespace
+
+std::string tiebreak_law_text(const cohesive::TractionLawParams& p) {
   std::ostringstream s;
   s << option_name(p.option) << ", NFLS " << p.NFLS * 1e-6 << " MPa, SFLS " << p.SFLS * 1e-6 << " MPa";
   if (p.option != cohesive::TiebreakOption::StressCcrit)
@@ -62,8 +64,6 @@ std::string law_text(const cohesive::TractionLawParams& p) {
   if (p.option == cohesive::TiebreakOption::MixedMode) s << ", CT2CN " << p.CT2CN;
   return s.str();
 }
-
-}  // namespace
 
 cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const model::Interface& itf) {
   cohesive::TiebreakPairsSpec spec;
@@ -101,7 +101,7 @@ model::Subsystem InterfaceTiebreaks::describe(const model::Model& model) {
   for (const auto& itf : model.interfaces) {
     if (!itf.tiebreak) continue;
     const cohesive::TiebreakPairs kernel = make_interface_pairs(model, itf);
-    const std::string law = law_text(itf.tiebreak->law);
+    const std::string law = tiebreak_law_text(itf.tiebreak->law);
     if (law != last_law) d << "; " << law << ": interface " << itf.id;
     else d << ", " << itf.id;
     last_law = law;

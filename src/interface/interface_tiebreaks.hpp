@@ -9,6 +9,7 @@
 // History: the delaminated (damage 1) area in total and per interface, pre-crack included.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "cohesive/tiebreak_pairs.hpp"
@@ -50,5 +51,8 @@ class InterfaceTiebreaks : public solver::ForceContributor {
 // The kernel of one interface (exposed for `check` and tests): pairs, areas, normals and faces of
 // `itf`, its law, and its pre-crack applied to the initial damage.
 cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const model::Interface& itf);
+
+// One line naming the law and its card values ("OPTION 9 (bilinear mixed mode), NFLS 60 MPa, ...").
+std::string tiebreak_law_text(const cohesive::TractionLawParams& p);
 
 }  // namespace plyimpact::interface

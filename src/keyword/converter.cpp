@@ -113,7 +113,7 @@ struct InitialVelocity {
 };
 
 struct Contact {
-  bool single = false, eroding = false;
+  bool single = false, eroding = false, tiebreak = false;
   bool all_parts = false;  // single surface with SSID 0 / SSTYP 5: every part
   std::vector<long> a, b;  // part ids
   std::vector<std::pair<std::string, std::string>> fields;
@@ -208,6 +208,8 @@ class Converter {
         {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", &Converter::contact},
         {"CONTACT_ERODING_SURFACE_TO_SURFACE", &Converter::contact},
         {"CONTACT_AUTOMATIC_SINGLE_SURFACE", &Converter::contact},
+        {"CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK", &Converter::contact},
+        {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK", &Converter::contact},
         {"RIGIDWALL_PLANAR", &Converter::rigidwall_planar},
         {"DATABASE_BINARY_D3PLOT", &Converter::database},
         {"DATABASE_GLSTAT", &Converter::database},
@@ -804,8 +806,9 @@ class Converter {
     Contact k;
     k.single = c.keyword.find("SINGLE_SURFACE") != std::string::npos;
     k.eroding = c.keyword.find("ERODING") != std::string::npos;
+    k.tiebreak = c.keyword.find("TIEBREAK") != std::string::npos;
     const std::size_t skip = contact_id_card_ ? 1 : 0;
-    const std::size_t fixed = 3 + (k.eroding ? 1 : 0);
+    const std::size_t fixed = 3 + (k.eroding ? 1 : 0) + (k.tiebreak ? 1 : 0);
     const FixedCards cards(c, fixed + 3, skip);
     const Fields f1 = cards.fields(0, tens({"SSID", "MSID", "SSTYP", "MSTYP", "SBOXID", "MBOXID", "SPR", "MPR"}));
     auto side = [&](const char* id_name, const char* type_name, std::vector<long>& out) {
@@ -846,9 +849,18 @@ class Converter {
     f2.require_default("BT", 0, "birth time");
     f2.require_default("DT", 1e20, "death time");
     const Fields f3 = cards.fields(2, tens({"SFS", "SFM", "SST", "MST", "SFST", "SFMT", "FSF", "VSF"}));
-    put(f3, "SFS");
-    put(f3, "SFM");
-    for (const char* n : {"SST", "MST"}) f3.require_default(n, 0, "contact thickness");
+    if (k.tiebreak) {
+      // SST and MST set the tying distance of eq. 7.40; a tiebreak has no penalty scale factors here.
+      for (const char* n : {"SFS", "SFM"}) f3.require_default(n, 1, "the tiebreak's stiffness is CN");
+      for (const char* n : {"SST", "MST"})
+        if (!f3.blank(n) && f3.real(n, 0) < 0) f3.fail(n, "a negative contact thickness (tying tolerance) is not implemented; allowed: >= 0");
+      put(f3, "SST");
+      put(f3, "MST");
+    } else {
+      put(f3, "SFS");
+      put(f3, "SFM");
+      for (const char* n : {"SST", "MST"}) f3.require_default(n, 0, "contact thickness");
+    }
     for (const char* n : {"SFST", "SFMT", "FSF", "VSF"}) f3.require_default(n, 1, "scale factors");
     if (k.eroding) {
       const Fields e = cards.fields(3, tens({"ISYM", "EROSOP", "IADJ"}));
@@ -857,7 +869,22 @@ class Converter {
       if (e.integer("EROSOP", 0) != 1) e.fail("EROSOP", "the eroding contact here always adds exposed faces; allowed: 1");
       e.require_default("IADJ", 0, "adjacent-material treatment");
     }
-    if (cards.has(fixed)) {
+    if (k.tiebreak) {
+      // Card 4 of the *_TIEBREAK contacts (Vol. I): OPTION NFLS SFLS PARAM ERATEN ERATES CT2CN CN.
+      const Fields t = cards.fields(3, tens({"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CT2CN", "CN"}));
+      const long option = t.integer("OPTION", 0);
+      if (option != 6 && option != 7 && option != 9)
+        t.fail("OPTION", "allowed: 6 (stress onset, linear softening), 7 (discrete crack, assumed law) or 9 "
+                         "(bilinear mixed mode); docs/delamination.md");
+      k.fields.push_back({"OPTION", std::to_string(option)});
+      if (t.blank("CN"))
+        t.fail("CN", "required: LS-DYNA's default (the penalty stiffness per segment area) is not implemented; "
+                     "give the interface stiffness");
+      for (const char* n : {"NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CT2CN", "CN"}) put(t, n);
+      for (std::size_t extra = fixed; extra < fixed + 3; ++extra)
+        if (cards.has(extra)) t.fail("OPTION", "optional cards A-C after the tiebreak card are not implemented for tiebreak contacts");
+    }
+    if (!k.tiebreak && cards.has(fixed)) {
       const Fields a = cards.fields(fixed, tens({"SOFT", "SOFSCL", "LCIDAB", "MAXPAR", "SBOPT", "DEPTH", "BSORT", "FRCFRQ"}));
       if (!a.blank("SOFT")) k.fields.push_back({"SOFT", std::to_string(a.integer("SOFT", 0))});
       put(a, "SOFSCL");
@@ -868,12 +895,12 @@ class Converter {
       if (!a.blank("BSORT")) k.fields.push_back({"BSORT", std::to_string(a.integer("BSORT", 0))});
       a.require_default("FRCFRQ", 1, "friction update");
     }
-    if (cards.has(fixed + 1)) {
+    if (!k.tiebreak && cards.has(fixed + 1)) {
       const Fields b = cards.fields(fixed + 1, tens({"PENMAX", "THKOPT", "SHLTHK", "SNLOG", "ISYM", "I2D3D", "SLDTHK", "SLDSTF"}));
       put(b, "PENMAX");
       for (const char* n : {"THKOPT", "SHLTHK", "SNLOG", "ISYM", "I2D3D", "SLDTHK", "SLDSTF"}) b.require_default(n, 0);
     }
-    if (cards.has(fixed + 2)) {
+    if (!k.tiebreak && cards.has(fixed + 2)) {
       const Fields cc = cards.fields(fixed + 2, tens({"IGAP", "IGNORE", "DPRFAC", "DTSTIF", "U5", "U6", "FLANGL", "CID_RCF"}));
       cc.require_default("IGAP", 1, "gap option");
       const long ignore = cc.integer("IGNORE", 0);
@@ -1068,7 +1095,9 @@ class Converter {
       y << "contacts:\n";
       for (std::size_t i = 0; i < contacts_.size(); ++i) {
         const Contact& k = contacts_[i];
-        const std::string type = std::string(k.eroding ? "eroding" : "automatic") + (k.single ? "_single_surface" : "_surface_to_surface");
+        const std::string type = k.tiebreak ? std::string("tiebreak_surface_to_surface")
+                                            : std::string(k.eroding ? "eroding" : "automatic") +
+                                                  (k.single ? "_single_surface" : "_surface_to_surface");
         y << "  - name: contact_" << i + 1 << "\n    type: " << type << "\n";
         const auto a = k.all_parts ? part_names(part_order_, contact_cards_[i]) : part_names(k.a, contact_cards_[i]);
         if (k.single) y << "    parts: [" << join(a) << "]\n";

@@ -217,6 +217,8 @@ struct Model {
   std::vector<RigidBody> rigid_bodies;
   std::vector<RigidWall> rigid_walls;
   std::vector<Contact> contacts;
+  // Tiebreak contacts (spec.tiebreak set): side a the slave surface, b the master (interface/surface_tiebreaks).
+  std::vector<Contact> tiebreak_contacts;
   Vec3 gravity{0, 0, 0};                // m/s^2
   // The rigid impactor's surface, when a contact or rigid body uses it: its nodes are appended to
   // the model's nodes (mass = impactor mass / number of surface nodes, for the contact stiffness)

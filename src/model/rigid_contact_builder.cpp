@@ -237,7 +237,7 @@ void add_rigid_bodies_and_contacts(const config::Scene& scene, Model& model) {
     };
     c.a = side(spec.surface_a);
     if (spec.type == config::ContactSpec::Type::SurfaceToSurface) c.b = side(spec.surface_b);
-    model.contacts.push_back(std::move(c));
+    (spec.tiebreak ? model.tiebreak_contacts : model.contacts).push_back(std::move(c));
   }
 }
 

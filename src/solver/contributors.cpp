@@ -1,6 +1,7 @@
 #include "solver/contributors.hpp"
 
 #include "interface/interface_tiebreaks.hpp"
+#include "interface/surface_tiebreaks.hpp"
 #include "solver/gravity.hpp"
 #include "solver/penalty_contacts.hpp"
 #include "solver/rigid_body_coupling.hpp"
@@ -24,6 +25,9 @@ const std::vector<ContributorType>& contributor_types() {
        }},
       {&interface::InterfaceTiebreaks::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
          return std::make_unique<interface::InterfaceTiebreaks>(s.model, s.dt_element);
+       }},
+      {&interface::SurfaceTiebreaks::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
+         return std::make_unique<interface::SurfaceTiebreaks>(s.model, s.dt_element);
        }},
   };
   return types;

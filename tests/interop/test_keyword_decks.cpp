@@ -313,18 +313,18 @@ TEST(KeywordRefusals, UnknownKeywordUnsupportedOptionAndFieldValueNameTheLine) {
                            "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n";
   const auto c = convert_text(dir, kCube + mesh +                       // lines 1-20
                                        "*LOAD_BODY_Z\n1,9.81\n"         // 21: unknown keyword
-                                       "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK\n1,2,3,3\n"  // 23: option
+                                       "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR\n1,2,3,3\n"  // 23: option
                                        "*CONTROL_TIMESTEP\n$ dtinit tssfac isdo tslimt dt2ms\n"
                                        "0.0,0.9,0,0.0,-1.0e-8\n");  // 27: DT2MS (mass scaling) not implemented
   EXPECT_TRUE(c.refused());
   const std::string file = (dir / "d.k").string();
   EXPECT_EQ(refusal(c, "LOAD_BODY_Z").rfind(file + ":21: *LOAD_BODY_Z: keyword not implemented", 0), 0u)
       << refusal(c, "LOAD_BODY_Z");
-  EXPECT_EQ(refusal(c, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK")
-                .rfind(file + ":23: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK: option 'TIEBREAK' of "
+  EXPECT_EQ(refusal(c, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR")
+                .rfind(file + ":23: *CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR: option 'MORTAR' of "
                               "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE is not implemented", 0),
             0u)
-      << refusal(c, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK");
+      << refusal(c, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR");
   EXPECT_EQ(refusal(c, "CONTROL_TIMESTEP").rfind(file + ":27: *CONTROL_TIMESTEP: field DT2MS = '-1.0e-8': not supported", 0), 0u)
       << refusal(c, "CONTROL_TIMESTEP");
   // The other cards are still reported, as used or mapped.
@@ -373,6 +373,44 @@ TEST(KeywordRefusals, SegmentSetContactIsRefusedAndSingleSurfaceZeroTakesEveryPa
   const auto d = convert_text(dir, kCube + mesh + single);
   ASSERT_FALSE(d.refused()) << keyword::refusals(d);
   EXPECT_NE(d.yaml.find("type: automatic_single_surface\n    parts: [part_1]"), std::string::npos) << d.yaml;
+  fs::remove_all(dir);
+}
+
+// Two unit cubes stacked with their own nodes (parts 1 and 2) and a tiebreak contact between them.
+std::string two_cubes(const std::string& tiebreak_card) {
+  return "*CONTROL_TERMINATION\n1.0e-6\n*PART\nlower\n1,1,1\n*PART\nupper\n2,1,1\n*SECTION_SOLID\n1\n"
+         "*MAT_ELASTIC\n1,7850.0,2.1e11,0.3\n"
+         "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+         "9,0,0,1\n10,1,0,1\n11,1,1,1\n12,0,1,1\n13,0,0,2\n14,1,0,2\n15,1,1,2\n16,0,1,2\n"
+         "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n2,2,9,10,11,12,13,14,15,16\n"
+         "*CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK\n2,1,3,3\n0.3\n\n" + tiebreak_card;
+}
+
+TEST(KeywordDecks, TiebreakContactMapsCardFourOntoATiebreakContact) {
+  const fs::path dir = test::scratch_dir();
+  const auto c = convert_text(dir, two_cubes("9,6.0e7,5.0e7,-2.0,765.0,1250.0,1.0,1.0e14\n"));
+  ASSERT_FALSE(c.refused()) << keyword::refusals(c);
+  for (const char* want : {"type: tiebreak_surface_to_surface", "surfaces: [[part_2], [part_1]]", "OPTION: 9"})
+    EXPECT_NE(c.yaml.find(want), std::string::npos) << want << "\n" << c.yaml;
+  const auto value = [&](const std::string& key) {
+    const auto at = c.yaml.find("    " + key + ": ");
+    return at == std::string::npos ? std::nan("") : std::stod(c.yaml.substr(at + key.size() + 6));
+  };
+  const std::pair<const char*, double> fields[] = {{"NFLS", 6e7}, {"SFLS", 5e7}, {"PARAM", -2}, {"ERATEN", 765},
+                                                   {"ERATES", 1250}, {"CT2CN", 1}, {"CN", 1e14}, {"FS", 0.3}};
+  for (const auto& [key, v] : fields) EXPECT_EQ(value(key), v) << key << "\n" << c.yaml;
+  fs::remove_all(dir);
+}
+
+TEST(KeywordRefusals, TiebreakWithoutCnOrWithAnUnknownOptionIsRefused) {
+  const fs::path dir = test::scratch_dir();
+  const auto no_cn = convert_text(dir, two_cubes("9,6.0e7,5.0e7,1.0,765.0,1250.0,1.0\n"));
+  EXPECT_NE(refusal(no_cn, "CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK").find("field CN"), std::string::npos)
+      << keyword::refusals(no_cn);
+  const auto option = convert_text(dir, two_cubes("8,6.0e7,5.0e7,1.0,765.0,1250.0,1.0,1.0e14\n"));
+  EXPECT_NE(refusal(option, "CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK").find("field OPTION = '8'"),
+            std::string::npos)
+      << keyword::refusals(option);
   fs::remove_all(dir);
 }
 
