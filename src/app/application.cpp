@@ -12,6 +12,7 @@
 #include "app/mesh_export.hpp"
 #include "app/plot_command.hpp"
 #include "app/study_command.hpp"
+#include "config/scene_digest.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
@@ -29,9 +30,13 @@ constexpr const char* kUsageHead =
     "usage: plyimpact <command> [options]\n"
     "\n"
     "commands:\n"
-    "  run SCENE.yaml [-o DIR]   run the scene; results go to DIR (default results/<scene>):\n"
+    "  run SCENE.yaml [-o DIR] [--restart DUMP] [--replace]\n"
+    "                            run the scene; results go to DIR (default results/<scene>):\n"
     "                            <scene>.pvd + VTU frames (open the .pvd in ParaView), history.csv,\n"
-    "                            summary.json\n"
+    "                            summary.json, restart.dump. Ctrl-C or SIGTERM stops cleanly (exit 2);\n"
+    "                            --restart DUMP continues a stopped or finished run (extend it with\n"
+    "                            --set control.termination_time=...); --replace removes another\n"
+    "                            run's results from DIR (refused otherwise)\n"
     "  check SCENE.yaml          validate the scene and print the model summary, active subsystems,\n"
     "                            stable time step and cost estimate; writes nothing\n"
     "  mesh SCENE.yaml [-o DIR]  mesh the scene and write it for inspection (default results/<scene>):\n"
@@ -198,23 +203,39 @@ int check(const std::string& path, const Overrides& overrides, std::ostream& out
   return 0;
 }
 
-int run(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out) {
+// What `run` takes besides the scene and its overrides.
+struct RunFlags {
+  std::string restart;  // dump to continue from
+  bool replace = false;
+};
+
+int run(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out,
+        const RunFlags& flags = {}) {
   const Loaded l = load(path, overrides);
   run::RunOptions options;
   options.output_dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
   options.progress = &out;
   options.progress_in_place = (&out == &std::cout) && isatty(STDOUT_FILENO);
-  out << "plyimpact " << PLYIMPACT_VERSION << ": running " << path << " (" << l.model.num_nodes() << " nodes, "
-      << l.model.num_elements() << " elements)\n";
+  options.restart = flags.restart;
+  options.replace = flags.replace;
+  options.scene_digest = config::scene_digest(path, overrides);
+  options.stop_on_signals = true;
+  out << "plyimpact " << PLYIMPACT_VERSION << ": " << (flags.restart.empty() ? "running " : "continuing ") << path
+      << " (" << l.model.num_nodes() << " nodes, " << l.model.num_elements() << " elements)";
+  if (!flags.restart.empty()) out << " from " << flags.restart;
+  out << "\n";
   print_overrides(overrides, out);
   const run::RunReport r = run::run_model(l.model, options);
   for (const auto& w : r.warnings) out << "warning: " << w << "\n";
   char buf[256];
   std::snprintf(buf, sizeof buf, "%s at t = %.6g s after %ld cycles, %.2f s wall, %.1f ns per element-cycle, energy ratio %.4f\n",
-                r.completed ? "completed" : "STOPPED", r.end_time, r.cycles, r.wall_seconds, r.ns_per_element_cycle,
+                r.completed ? "completed" : r.interrupted ? "INTERRUPTED" : "STOPPED", r.end_time, r.cycles, r.wall_seconds, r.ns_per_element_cycle,
                 r.energy_ratio);
   out << buf;
   out << "results: " << r.pvd.string() << " (open in ParaView), " << r.history.string() << ", " << r.summary.string() << "\n";
+  if (!r.dump.empty())
+    out << "restart dump: " << r.dump.string() << " (continue or extend: plyimpact run " << path << " -o "
+        << options.output_dir.string() << " --restart " << r.dump.string() << " [--set control.termination_time=...])\n";
   if (!r.completed) {
     out << "stopped: " << r.stop_reason << "\n";
     return 2;
@@ -244,17 +265,22 @@ int run_application(const std::vector<std::string>& args, std::ostream& out, std
     if ((args[0] == "run" || args[0] == "check" || args[0] == "mesh") && args.size() >= 2) {
       std::string out_dir;
       Overrides overrides;
+      RunFlags flags;
       for (std::size_t i = 2; i < args.size(); ++i) {
         if (parse_override_option(args, i, overrides)) continue;
         if ((args[i] == "-o" || args[i] == "--output") && i + 1 < args.size() && (args[0] == "run" || args[0] == "mesh")) {
           out_dir = args[++i];
+        } else if (args[i] == "--restart" && i + 1 < args.size() && args[0] == "run") {
+          flags.restart = args[++i];
+        } else if (args[i] == "--replace" && args[0] == "run") {
+          flags.replace = true;
         } else {
           err << "plyimpact: unexpected argument '" << args[i] << "'\n" << usage();
           return 64;
         }
       }
       if (args[0] == "mesh") return mesh_command(args[1], out_dir, overrides, out);
-      return args[0] == "run" ? run(args[1], out_dir, overrides, out) : check(args[1], overrides, out);
+      return args[0] == "run" ? run(args[1], out_dir, overrides, out, flags) : check(args[1], overrides, out);
     }
     err << "plyimpact: unknown command or missing scene file\n" << usage();
     return 64;

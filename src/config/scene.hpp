@@ -170,6 +170,7 @@ struct ControlSpec {
 struct OutputSpec {
   double interval = 0;          // s between VTU frames; 0 = 20 frames over the run
   double history_interval = 0;  // s between history.csv rows; 0 = 1000 rows over the run
+  double restart_interval = 0;  // s between restart dumps (*DATABASE_BINARY_D3DUMP); 0 = only at the end
 };
 
 // One ply of a laminate, bottom (z = 0) to top.

@@ -56,11 +56,12 @@ ControlSpec read_control(const Reader& r) {
 }
 
 OutputSpec read_output(const Reader& r) {
-  r.require_map("a mapping with optional interval and history_interval (times)");
-  r.allow_keys({"interval", "history_interval"});
+  r.require_map("a mapping with optional interval, history_interval and restart_interval (times)");
+  r.allow_keys({"interval", "history_interval", "restart_interval"});
   OutputSpec o;
   o.interval = r.quantity_or("interval", u::time, 0.0, Limits::non_negative("output interval"));
   o.history_interval = r.quantity_or("history_interval", u::time, 0.0, Limits::non_negative("history interval"));
+  o.restart_interval = r.quantity_or("restart_interval", u::time, 0.0, Limits::non_negative("restart interval"));
   return o;
 }
 

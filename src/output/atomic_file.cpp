@@ -1,6 +1,8 @@
 #include "output/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -16,13 +18,15 @@ namespace {
 
 std::string os_reason(int err) { return std::error_code(err, std::generic_category()).message(); }
 
+constexpr std::string_view kTemporaryTag = ".tmp.";
+
 fs::path temporary_path_for(const fs::path& path) {
   // The pid keeps two processes writing into one output directory from clobbering each other's
   // temporary; the leading dot keeps it out of ParaView's file dialog.
   // Appended piecewise: g++ 12 -O3 gives a false -Wrestrict on `"." + std::string` (GCC PR 105329).
   std::string name(1, '.');
   name += path.filename().string();
-  name += ".tmp.";
+  name += kTemporaryTag;
   name += std::to_string(static_cast<long>(::getpid()));
   return path.parent_path() / name;
 }
@@ -112,6 +116,59 @@ void write_text_atomically(const fs::path& path, std::string_view content) {
       throw RunError(msg() << "close '" << tmp.string() << "': " << os_reason(errno));
     }
   });
+}
+
+pid_t temporary_owner(const std::string& file_name) {
+  const std::size_t tag = file_name.rfind(kTemporaryTag);
+  if (file_name.size() < 2 || file_name[0] != '.' || tag == std::string::npos || tag < 2) return -1;
+  const std::string digits = file_name.substr(tag + kTemporaryTag.size());
+  if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos) return -1;
+  return static_cast<pid_t>(std::stol(digits));
+}
+
+std::size_t remove_stale_temporaries(const fs::path& dir) noexcept {
+  std::size_t removed = 0;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const pid_t owner = temporary_owner(it->path().filename().string());
+    if (owner <= 0) continue;
+    // kill(pid, 0) probes a process without signalling it; ESRCH: no such process. EPERM means
+    // it exists under another user, whose temporary is not ours to remove.
+    const bool dead = owner != ::getpid() && ::kill(owner, 0) != 0 && errno == ESRCH;
+    std::error_code ignored;
+    if ((owner == ::getpid() || dead) && fs::remove(it->path(), ignored)) ++removed;
+  }
+  return removed;
+}
+
+void AppendingFile::open(const fs::path& path) {
+  close();
+  path_ = path;
+  fd_ = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd_ < 0) throw RunError(msg() << "cannot append to '" << path.string() << "': " << os_reason(errno));
+}
+
+void AppendingFile::append(std::string_view text) {
+  struct stat st {};
+  if (::fstat(fd_, &st) != 0) throw RunError(msg() << "cannot append to '" << path_.string() << "': " << os_reason(errno));
+  const char* data = text.data();
+  std::size_t left = text.size();
+  while (left > 0) {
+    const ssize_t n = ::write(fd_, data, left);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int err = n < 0 ? errno : ENOSPC;
+      if (::ftruncate(fd_, st.st_size) != 0) {}  // best effort: the file ends at its last whole line
+      throw RunError(msg() << "cannot append to '" << path_.string() << "': " << os_reason(err));
+    }
+    data += n;
+    left -= static_cast<std::size_t>(n);
+  }
+}
+
+void AppendingFile::close() noexcept {
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
 }
 
 }  // namespace plyimpact::output

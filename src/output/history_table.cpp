@@ -1,5 +1,6 @@
 #include "output/history_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -57,20 +58,25 @@ void HistoryTable::add_row(std::span<const double> values) {
   values_.insert(values_.end(), values.begin(), values.end());
 }
 
-void HistoryTable::write_csv(const std::filesystem::path& path) const {
+void HistoryTable::write_csv(const std::filesystem::path& path) const { write_text_atomically(path, csv_text(0, true)); }
+
+std::string HistoryTable::csv_text(std::size_t first_row, bool with_header) const {
   std::string text;
-  text.reserve(16 * (columns_.size() + values_.size()));
-  for (std::size_t c = 0; c < columns_.size(); ++c) {
-    if (c > 0) text += ',';
-    append_csv_field(text, columns_[c]);
-  }
-  text += '\n';
   const std::size_t ncol = columns_.size();
-  for (std::size_t i = 0; i < values_.size(); ++i) {
+  const std::size_t first = std::min(first_row * ncol, values_.size());
+  text.reserve(16 * ((with_header ? ncol : 0) + values_.size() - first));
+  if (with_header) {
+    for (std::size_t c = 0; c < ncol; ++c) {
+      if (c > 0) text += ',';
+      append_csv_field(text, columns_[c]);
+    }
+    text += '\n';
+  }
+  for (std::size_t i = first; i < values_.size(); ++i) {
     append_number(text, values_[i]);
     text += (i % ncol == ncol - 1) ? '\n' : ',';
   }
-  write_text_atomically(path, text);
+  return text;
 }
 
 int HistoryTable::column_index(std::string_view name) const {

@@ -36,6 +36,10 @@ class HistoryTable {
   /// "nan" and infinities as "inf"/"-inf" (strtod and numpy read both back).
   void write_csv(const std::filesystem::path& path) const;
 
+  /// The CSV text write_csv writes, from row `first_row` on, with or without the header line (a
+  /// writer that appends rows to a file as they come).
+  std::string csv_text(std::size_t first_row, bool with_header) const;
+
  private:
   std::vector<std::string> columns_;
   std::vector<double> values_;

@@ -24,6 +24,17 @@ void ContactEnergyWatch::observe(const std::vector<double>& energies, double t, 
   }
 }
 
+void ContactEnergyWatch::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "contact_energy_watch");
+  for (Entry& e : entries_) {
+    StateGroup contact(visitor, e.name);
+    visitor.scalar("first_time", e.first_time);
+    visitor.scalar("threshold", e.threshold);
+    visitor.scalar("minimum", e.minimum);
+    visitor.scalar("minimum_time", e.minimum_time);
+  }
+}
+
 std::vector<std::string> ContactEnergyWatch::warnings() const {
   std::vector<std::string> out;
   for (const Entry& e : entries_) {

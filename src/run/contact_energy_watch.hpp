@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/state_visitor.hpp"
+
 namespace plyimpact::run {
 
 class ContactEnergyWatch {
@@ -25,6 +27,9 @@ class ContactEnergyWatch {
 
   // One warning per contact that crossed the threshold.
   std::vector<std::string> warnings() const;
+
+  // What has been seen so far, per contact (run state for a restart).
+  void visit_state(StateVisitor& visitor);
 
  private:
   struct Entry {

@@ -1,5 +1,9 @@
 #include "run/history_writer.hpp"
 
+#include <span>
+
+#include "core/error.hpp"
+
 namespace plyimpact::run {
 
 namespace {
@@ -40,13 +44,8 @@ bool can_erode(const model::Model& model) {
   return false;
 }
 
-HistoryWriter::HistoryWriter(const model::Model& model, std::filesystem::path file, double interval,
-                             double flush_interval)
-    : model_(model),
-      file_(std::move(file)),
-      t_end_(model.control.termination_time),
-      rows_(interval),
-      flushes_(flush_interval) {}
+HistoryWriter::HistoryWriter(const model::Model& model, std::filesystem::path file, double interval)
+    : model_(model), file_(std::move(file)), rows_(interval) {}
 
 void HistoryWriter::add_row(const solver::Solver& solver) {
   const solver::State& s = solver.state();
@@ -65,10 +64,35 @@ void HistoryWriter::add_row(const solver::Solver& solver) {
   table_->add_row(row_);
 }
 
+void HistoryWriter::rewrite(bool keep_appending) {
+  appender_.close();
+  table_->write_csv(file_);
+  rows_on_disk_ = table_->rows();
+  last_append_ = Clock::now();
+  if (keep_appending) appender_.open(file_);
+}
+
+void HistoryWriter::append_pending() {
+  appender_.append(table_->csv_text(rows_on_disk_, false));
+  rows_on_disk_ = table_->rows();
+  last_append_ = Clock::now();
+}
+
 void HistoryWriter::start(const solver::Solver& solver) {
   table_.emplace(history_columns(model_, &solver));
   add_row(solver);
-  table_->write_csv(file_);
+  rewrite(true);
+}
+
+void HistoryWriter::resume(const solver::Solver& solver) {
+  table_.emplace(history_columns(model_, &solver));
+  const std::size_t ncol = table_->columns().size();
+  if (stored_.size() % ncol != 0)
+    throw InputError(msg() << "the restart dump's history has rows of another width than this scene's " << ncol
+                           << " columns");
+  for (std::size_t r = 0; r < stored_.size(); r += ncol) table_->add_row(std::span(stored_).subspan(r, ncol));
+  stored_ = {};
+  rewrite(true);
 }
 
 void HistoryWriter::after_cycle(const solver::Solver& solver) {
@@ -77,16 +101,22 @@ void HistoryWriter::after_cycle(const solver::Solver& solver) {
     add_row(solver);
     rows_.advance(t);
   }
-  if (flushes_.due(t) || t >= t_end_ * (1 - 1e-12)) {
-    table_->write_csv(file_);
-    if (flushes_.due(t)) flushes_.advance(t);
-  }
+  if (table_->rows() > rows_on_disk_ && Clock::now() - last_append_ >= kAppendDelay) append_pending();
 }
 
 void HistoryWriter::stop(const solver::Solver* solver, RunReport& report) {
   if (!table_) table_.emplace(history_columns(model_, solver));  // the solver could not be built
-  table_->write_csv(file_);
+  rewrite(false);
   report.history = file_;
+}
+
+void HistoryWriter::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "history");
+  // Written from the table; read into stored_ (the table is built by resume, from the solver).
+  if (table_) stored_.assign(table_->values().begin(), table_->values().end());
+  visitor.array("rows", stored_);
+  if (table_) stored_ = {};
+  rows_.visit_state(visitor, "next_row_time");
 }
 
 }  // namespace plyimpact::run

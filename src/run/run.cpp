@@ -3,13 +3,18 @@
 #include <omp.h>
 
 #include <chrono>
+#include <limits>
 #include <memory>
+#include <optional>
 
 #include "core/error.hpp"
 #include "run/frame_writer.hpp"
 #include "run/history_writer.hpp"
+#include "run/output_folder.hpp"
 #include "run/progress_line.hpp"
+#include "run/restart_dump.hpp"
 #include "run/run_checks.hpp"
+#include "run/stop_signals.hpp"
 #include "run/summary_writer.hpp"
 #include "solver/solver.hpp"
 
@@ -20,19 +25,36 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 }  // namespace
 
-RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& observers) {
+RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& observers, const LoopOptions& options) {
   if (model.control.threads > 0) omp_set_num_threads(model.control.threads);
   RunReport report;
   const double t_end = model.control.termination_time;
   double solver_seconds = 0;
   long solver_cycles = 0;
   std::unique_ptr<solver::Solver> solver;
+  const auto dump = [&] {
+    write_dump(options.dump_file, options.identity, *solver, observers);
+    report.dump = options.dump_file;
+  };
   try {
     solver = std::make_unique<solver::Solver>(model);
     for (const auto& w : solver->warnings()) report.warnings.push_back(w);
-    for (RunObserver* o : observers) o->start(*solver);
+    if (options.restart) {
+      read_dump(*options.restart, *solver, observers);
+      for (RunObserver* o : observers) o->resume(*solver);
+    } else {
+      for (RunObserver* o : observers) o->start(*solver);
+    }
+    // Dumps do not change the run, so their schedule is not run state: the next mark after now.
+    Sampler dumps(options.dump_interval > 0 ? options.dump_interval : std::numeric_limits<double>::infinity());
+    if (dumps.due(solver->state().time)) dumps.advance(solver->state().time);
     const long max_cycles = model.control.max_cycles;
     while (solver->state().time < t_end * (1 - 1e-12) && (max_cycles <= 0 || solver->state().cycle < max_cycles)) {
+      if (options.watch_signals && StopSignals::received() != 0) {
+        report.interrupted = true;
+        report.stop_reason = "interrupted by " + StopSignals::name(StopSignals::received());
+        break;
+      }
       solver::State& s = solver->state();
       if (s.time + s.dt_next_half > t_end) s.dt_next_half = t_end - s.time;  // land on the end time
       const auto t0 = Clock::now();
@@ -40,11 +62,18 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
       solver_seconds += seconds_since(t0);
       ++solver_cycles;
       for (RunObserver* o : observers) o->after_cycle(*solver);
+      if (!options.dump_file.empty() && dumps.due(solver->state().time)) {
+        dump();
+        dumps.advance(solver->state().time);
+      }
     }
     report.completed = solver->state().time >= t_end * (1 - 1e-12);
-    if (!report.completed) report.stop_reason = "max_cycles reached before the termination time";
+    if (!report.completed && !report.interrupted) report.stop_reason = "max_cycles reached before the termination time";
+    // Before the observers' stop: the frame an early stop writes is not part of the run state.
+    if (!options.dump_file.empty()) dump();
   } catch (const RunError& e) {
     report.completed = false;
+    report.failed = true;
     report.stop_reason = e.what();
   }
   if (solver) {
@@ -60,12 +89,17 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
 
 RunReport run_model(const model::Model& model, const RunOptions& options) {
   const auto t_start = Clock::now();
-  std::filesystem::create_directories(options.output_dir);
+  const std::uint64_t identity = run_identity(options.scene_digest, model);
+  std::optional<LoadedDump> restart;
+  if (!options.restart.empty()) restart = load_dump(options.restart, identity);  // refused before any write
+  prepare_output_folder(options.output_dir, model.name, identity, FolderUse{restart.has_value(), options.replace});
+  const OutputFolderGuard guard(options.output_dir);
+
   const double t_end = model.control.termination_time;
   const double frame_interval = model.output.interval > 0 ? model.output.interval : t_end / 20;
   const double history_interval = model.output.history_interval > 0 ? model.output.history_interval : t_end / 1000;
 
-  HistoryWriter history(model, options.output_dir / "history.csv", history_interval, frame_interval);
+  HistoryWriter history(model, options.output_dir / "history.csv", history_interval);
   FrameWriter frames(model, options.output_dir, frame_interval);
   HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
   ContactEnergyCheck contact_energy(model);
@@ -79,7 +113,16 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   if (progress) observers.push_back(progress.get());
   for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &energy_ratio, &summary})
     observers.push_back(o);
-  RunReport report = run_loop(model, observers);
+
+  LoopOptions loop;
+  loop.restart = restart ? &*restart : nullptr;
+  loop.dump_file = options.output_dir / kDumpFileName;
+  loop.dump_interval = model.output.restart_interval;
+  loop.identity = identity;
+  loop.watch_signals = options.stop_on_signals;
+  std::optional<StopSignals> signals;
+  if (options.stop_on_signals) signals.emplace();
+  RunReport report = run_loop(model, observers, loop);
   report.wall_seconds = seconds_since(t_start);
   return report;
 }

@@ -25,6 +25,13 @@ void HourglassCheck::stop(const solver::Solver* solver, RunReport& report) {
   report.warnings.push_back(w);
 }
 
+void HourglassCheck::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "hourglass_check");
+  samples_.visit_state(visitor, "next_sample_time");
+  visitor.scalar("max_ratio", max_ratio_);
+  visitor.scalar("peak_internal", peak_internal_);
+}
+
 namespace {
 std::vector<std::string> contact_names(const model::Model& model) {
   std::vector<std::string> names;

@@ -18,6 +18,7 @@ class HourglassCheck : public RunObserver {
   HourglassCheck(double sample_interval, double warn_ratio) : samples_(sample_interval), warn_ratio_(warn_ratio) {}
   void after_cycle(const solver::Solver& solver) override;
   void stop(const solver::Solver* solver, RunReport& report) override;
+  void visit_state(StateVisitor& visitor) override;
 
  private:
   Sampler samples_;
@@ -30,6 +31,7 @@ class ContactEnergyCheck : public RunObserver {
   explicit ContactEnergyCheck(const model::Model& model);
   void after_cycle(const solver::Solver& solver) override;
   void stop(const solver::Solver* solver, RunReport& report) override;
+  void visit_state(StateVisitor& visitor) override { watch_.visit_state(visitor); }
 
  private:
   ContactEnergyWatch watch_;

@@ -1,8 +1,12 @@
 // The run loop hands the solver to observers: everything that watches a run without changing its
-// physics (frames, history, summary, progress line, energy and hourglass checks; restart dumps and
-// a study runner later) is one. The loop calls start once the solver is built (the state at
-// t = 0), after_cycle after every cycle, and stop once, also when the run stopped with an error
-// (then `solver` may be null: it could not be built). Observers see the solver read-only.
+// physics (frames, history, summary, progress line, energy and hourglass checks; a study runner
+// later) is one. The loop calls start once the solver is built (the state at t = 0), after_cycle
+// after every cycle, and stop once, also when the run stopped with an error (then `solver` may be
+// null: it could not be built). Observers see the solver read-only.
+// A run continued from a restart dump (run/restart_dump.hpp) calls visit_state with the dump's
+// reader and then resume instead of start: what an observer has gathered so far (history rows,
+// frame times, the samplers' next marks, a check's extremes) is part of the run state, so a
+// continued run writes the same files as one that never stopped.
 #pragma once
 
 #include <algorithm>
@@ -11,12 +15,15 @@
 #include <string>
 #include <vector>
 
+#include "core/state_visitor.hpp"
 #include "solver/solver.hpp"
 
 namespace plyimpact::run {
 
 struct RunReport {
   bool completed = false;
+  bool interrupted = false;      // stopped by SIGINT or SIGTERM (the state is sound)
+  bool failed = false;           // stopped by a RunError (the state may not be sound)
   std::string stop_reason;       // empty when completed
   long cycles = 0;
   double end_time = 0;
@@ -24,13 +31,17 @@ struct RunReport {
   double ns_per_element_cycle = 0;  // solver cycles only
   double energy_ratio = 1;
   std::vector<std::string> warnings;
-  std::filesystem::path pvd, history, summary;
+  std::filesystem::path pvd, history, summary, dump;
 };
 
 class RunObserver {
  public:
   virtual ~RunObserver() = default;
   virtual void start(const solver::Solver& solver) { (void)solver; }
+  // Instead of start when the run continues from a dump, after visit_state has read it.
+  virtual void resume(const solver::Solver& solver) { (void)solver; }
+  // The observer's share of the run state (nothing for a stateless observer).
+  virtual void visit_state(StateVisitor& visitor) { (void)visitor; }
   virtual void after_cycle(const solver::Solver& solver) { (void)solver; }
   // In the order the observers were registered: a later one sees the warnings of earlier ones.
   virtual void stop(const solver::Solver* solver, RunReport& report) {
@@ -47,6 +58,8 @@ class Sampler {
   explicit Sampler(double interval) : interval_(interval), next_(interval) {}
   bool due(double t) const { return t >= next_ * (1 - 1e-12); }
   void advance(double t) { next_ += interval_ * std::max(1.0, std::floor((t - next_) / interval_) + 1); }
+  // The next mark is run state; the interval comes from the scene (it may change on a restart).
+  void visit_state(StateVisitor& visitor, std::string_view name) { visitor.scalar(name, next_); }
 
  private:
   double interval_, next_;

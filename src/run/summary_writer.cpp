@@ -16,7 +16,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
   output::Json j = output::Json::object();
   j["scene"] = model.name;
   j["version"] = PLYIMPACT_VERSION;
-  j["status"] = report.completed ? "completed" : "stopped";
+  j["status"] = report.completed ? "completed" : report.interrupted ? "interrupted" : "stopped";
   j["stop_reason"] = report.stop_reason;
   j["cycles"] = report.cycles;
   j["end_time"] = report.end_time;
@@ -66,6 +66,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
   j["files"] = output::Json::object();
   j["files"]["pvd"] = report.pvd.filename().string();
   j["files"]["history"] = report.history.filename().string();
+  if (!report.dump.empty()) j["files"]["restart_dump"] = report.dump.filename().string();
   output::write_json_atomically(file_, j);
 }
 

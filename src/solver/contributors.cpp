@@ -3,6 +3,7 @@
 #include "interface/interface_tiebreaks.hpp"
 #include "interface/surface_tiebreaks.hpp"
 #include "solver/gravity.hpp"
+#include "solver/impactor_motion.hpp"
 #include "solver/penalty_contacts.hpp"
 #include "solver/rigid_body_coupling.hpp"
 #include "solver/rigid_walls.hpp"
@@ -22,6 +23,9 @@ const std::vector<ContributorType>& contributor_types() {
        }},
       {&RigidBodyCoupling::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
          return std::make_unique<RigidBodyCoupling>(s.model, *s.bodies, s.node_body, s.contributors);
+       }},
+      {&ImpactorMotion::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
+         return std::make_unique<ImpactorMotion>(s.model);
        }},
       {&interface::InterfaceTiebreaks::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
          return std::make_unique<interface::InterfaceTiebreaks>(s.model, s.dt_element);

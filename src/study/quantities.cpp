@@ -41,11 +41,15 @@ struct RigidColumns {
   std::array<std::size_t, 3> x, v, a, f;
 };
 
+bool has_deformable_impactor(const RunRecord& r) {
+  const auto& names = r.history.columns();
+  return std::find(names.begin(), names.end(), "impactor_vx") != names.end();
+}
+
 RigidColumns rigid_impactor(const RunRecord& r) {
   const auto vx = columns_starting_with(r, "rigid_", "_vx");
   if (vx.empty())
-    throw NotAvailable("not available in this scene: no rigid impactor (history.csv has no rigid_<name>_vx column; a "
-                       "deformable impactor's velocity is not recorded)");
+    throw NotAvailable("not available in this scene: no rigid impactor (history.csv has no rigid_<name>_vx column)");
   const std::string& col = r.history.columns()[vx.front()];
   const std::string base = col.substr(0, col.size() - 2);  // "rigid_<name>_"
   RigidColumns rc;
@@ -59,16 +63,36 @@ RigidColumns rigid_impactor(const RunRecord& r) {
   return rc;
 }
 
+// Position and velocity columns of the impactor: a rigid impactor's rigid_<name>_*, else a deformable
+// impactor's centre of mass impactor_* (solver/impactor_motion.hpp).
+struct MotionColumns {
+  std::array<std::size_t, 3> x, v;
+};
+
+MotionColumns impactor_motion(const RunRecord& r) {
+  if (columns_starting_with(r, "rigid_", "_vx").empty() && has_deformable_impactor(r)) {
+    MotionColumns m;
+    const char* axes[] = {"x", "y", "z"};
+    for (int k = 0; k < 3; ++k) {
+      m.x[k] = column(r, std::string("impactor_") + axes[k], "impactor centre of mass");
+      m.v[k] = column(r, std::string("impactor_v") + axes[k], "impactor velocity");
+    }
+    return m;
+  }
+  const RigidColumns rc = rigid_impactor(r);
+  return {rc.x, rc.v};
+}
+
 std::array<double, 3> row_vec(const RunRecord& r, std::size_t row, const std::array<std::size_t, 3>& c) {
   return {r.history.at(row, c[0]), r.history.at(row, c[1]), r.history.at(row, c[2])};
 }
 double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // Unit vector of the initial impactor velocity (the impact direction).
-std::array<double, 3> impact_direction(const RunRecord& r, const RigidColumns& rc) {
+std::array<double, 3> impact_direction(const RunRecord& r, const MotionColumns& rc) {
   auto v0 = row_vec(r, 0, rc.v);
   const double n = std::sqrt(dot(v0, v0));
-  if (n == 0) throw NotAvailable("the rigid impactor starts at rest: no impact direction");
+  if (n == 0) throw NotAvailable("the impactor starts at rest: no impact direction");
   for (double& c : v0) c /= n;
   return v0;
 }
@@ -128,20 +152,24 @@ Values absorbed_energy(const RunRecord& r) {
     const auto v0 = row_vec(r, 0, rc.v), v1 = row_vec(r, rows(r) - 1, rc.v);
     return {{"absorbed_energy", 0.5 * m * (dot(v0, v0) - dot(v1, v1))}};
   }
+  if (has_deformable_impactor(r)) {
+    const std::size_t k = column(r, "impactor_kinetic_energy", "impactor kinetic energy");
+    return {{"absorbed_energy", r.history.at(0, k) - r.history.at(rows(r) - 1, k)}};
+  }
   const std::size_t k = column(r, "kinetic_energy", "kinetic energy");
   return {{"absorbed_energy", r.history.at(0, k) - r.history.at(rows(r) - 1, k)}};
 }
 
 Values residual_velocity(const RunRecord& r) {
   require_rows(r);
-  const auto rc = rigid_impactor(r);
+  const auto rc = impactor_motion(r);
   return {{"residual_velocity", dot(row_vec(r, rows(r) - 1, rc.v), impact_direction(r, rc))}};
 }
 
 // Impactor travel along the impact direction per row.
 std::vector<double> impactor_travel(const RunRecord& r) {
   require_rows(r);
-  const auto rc = rigid_impactor(r);
+  const auto rc = impactor_motion(r);
   const auto d = impact_direction(r, rc);
   const auto x0 = row_vec(r, 0, rc.x);
   std::vector<double> s(rows(r));
@@ -163,7 +191,7 @@ Values max_impactor_displacement(const RunRecord& r) {
 // start the impactor a stated `gap` away; the table reports travel, the user subtracts the gap).
 Values permanent_indentation(const RunRecord& r) {
   const auto s = impactor_travel(r);
-  const auto rc = rigid_impactor(r);
+  const auto rc = impactor_motion(r);
   const double v_end = dot(row_vec(r, rows(r) - 1, rc.v), impact_direction(r, rc));
   if (v_end >= 0)
     throw NotAvailable("not available in this run: the impactor has not rebounded by the termination time");
@@ -254,7 +282,7 @@ constexpr QuantityDefinition kQuantities[] = {
     {"peak_contact_force_time", "s", "time of the peak contact force", peak_contact_force_time},
     {"absorbed_energy", "J",
      "impactor kinetic energy lost (rigid impactor); else the total kinetic energy lost", absorbed_energy},
-    {"residual_velocity", "m/s", "final rigid-impactor velocity along the impact direction (< 0: rebound)",
+    {"residual_velocity", "m/s", "final impactor velocity (a deformable one's centre of mass) along the impact direction (< 0: rebound)",
      residual_velocity},
     {"max_impactor_displacement", "m", "largest rigid-impactor travel along the impact direction",
      max_impactor_displacement},

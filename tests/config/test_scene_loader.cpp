@@ -41,6 +41,7 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   EXPECT_EQ(s.control.threads, 2);
   expect_rel(s.output.interval, 1e-6);
   expect_rel(s.output.history_interval, 1e-7);
+  expect_rel(s.output.restart_interval, 2e-6);
 
   ASSERT_EQ(s.materials.size(), 2u);
   const cfg::MaterialSpec& steel = s.materials[0];

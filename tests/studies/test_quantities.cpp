@@ -99,5 +99,22 @@ TEST(Quantities, DelaminatedAreaPerInterface) {
   EXPECT_DOUBLE_EQ(v[0].value, 3e-6);
 }
 
+// A deformable impactor (centre-of-mass columns impactor_*): the same motion as the rigid tup, its
+// kinetic energy column 0.5 x 2 x v^2 plus 1 J of vibration at the end. Residual velocity and
+// travel come from the centre of mass, the absorbed energy from the kinetic-energy column: 9 - 5 = 4 J.
+TEST(Quantities, DeformableImpactorFromItsCentreOfMass) {
+  RunRecord r;
+  r.history = output::HistoryTable({"time", "kinetic_energy", "impactor_x", "impactor_y", "impactor_z", "impactor_vx",
+                                    "impactor_vy", "impactor_vz", "impactor_kinetic_energy"});
+  for (int i = 0; i <= 10; ++i) {
+    const double t = 0.01 * i, v = -3 + 50 * t, z = 0.5 - 3 * t + 25 * t * t;
+    r.history.add_row(std::vector<double>{t, 0, 0.1, 0.2, z, 0, 0, v, 0.5 * 2 * v * v + (i == 10 ? 1.0 : 0.0)});
+  }
+  EXPECT_NEAR(value(r, "residual_velocity"), -2.0, 2e-12);
+  EXPECT_NEAR(value(r, "max_impactor_displacement"), 0.09, 1e-12);
+  EXPECT_NEAR(value(r, "permanent_indentation"), 0.05, 1e-12);
+  EXPECT_NEAR(value(r, "absorbed_energy"), 4.0, 4e-12);
+}
+
 }  // namespace
 }  // namespace plyimpact::study
