@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
+#include "run/cycle_budget.hpp"
 #include "run/run.hpp"
 #include "solver/contributors.hpp"
 #include "solver/solver.hpp"
@@ -64,12 +65,14 @@ struct Loaded {
 
 using Overrides = std::vector<config::SceneOverride>;
 
-// Boxes, or the gmsh laminate mesher and the impactor when the scene has a laminate.
-Loaded load(const std::string& path, const Overrides& overrides) {
+// Boxes, or the gmsh laminate mesher and the impactor when the scene has a laminate. A scene to be
+// run (or checked for a run) must also finish in a stated number of cycles.
+Loaded load(const std::string& path, const Overrides& overrides, bool for_a_run = true) {
   Loaded l;
   l.scene = config::load_scene(path, overrides);
   l.mesh = mesh::mesh_scene(l.scene);
   l.model = model::build_model(l.scene, l.mesh);
+  if (for_a_run) run::require_cycle_budget(l.scene, l.model, run::estimate_cycles(l.model));
   return l;
 }
 
@@ -120,7 +123,7 @@ void print_overrides(const Overrides& overrides, std::ostream& out) {
 }
 
 int mesh_command(const std::string& path, const std::string& out_dir, const Overrides& overrides, std::ostream& out) {
-  const Loaded l = load(path, overrides);
+  const Loaded l = load(path, overrides, /*for_a_run=*/false);
   const auto dir = out_dir.empty() ? std::filesystem::path("results") / l.scene.name : std::filesystem::path(out_dir);
   out << "plyimpact mesh: " << path << ": " << l.model.num_nodes() << " nodes, " << l.model.num_elements()
       << " elements, " << l.model.parts.size() << " parts\n";

@@ -331,8 +331,8 @@ std::vector<SupportSpec> read_supports(const Reader& r, const LaminateSpec& lam)
       if (w.node().size() != 2) w.fail("expected the two sizes of the opening", "[x, y]");
       const auto xy = w.items();
       spec.kind = SupportSpec::Kind::Window;
-      spec.window_x = xy[0].as_quantity(u::length, Limits::positive("window size"));
-      spec.window_y = xy[1].as_quantity(u::length, Limits::positive("window size"));
+      spec.window_x = xy[0].as_quantity(u::length, Limits::positive("window size").of(QuantityKind::size));
+      spec.window_y = xy[1].as_quantity(u::length, Limits::positive("window size").of(QuantityKind::size));
       const double hx = std::min(lam.impact_x, lam.length - lam.impact_x);
       const double hy = std::min(lam.impact_y, lam.width - lam.impact_y);
       if (spec.window_x / 2 >= hx) xy[0].fail("the opening does not fit inside the plate around the impact point",
@@ -381,8 +381,8 @@ void read_laminate(const Reader& r, Scene& scene) {
                 "symmetry", "supports"});
   LaminateSpec lam;
   lam.where = r.where();
-  lam.length = r.quantity("length", u::length, Limits::positive("plate length"));
-  lam.width = r.quantity("width", u::length, Limits::positive("plate width"));
+  lam.length = r.quantity("length", u::length, Limits::positive("plate length").of(QuantityKind::size));
+  lam.width = r.quantity("width", u::length, Limits::positive("plate width").of(QuantityKind::size));
   const Reader stacking = r.at("stacking", "laminate notation in quotes, e.g. \"[0/45/-45/90]2s\", or a list of angles");
   const std::vector<double> angles = read_stacking(stacking);
   const Reader t = r.at("ply_thickness", "one thickness, or a list with one thickness per ply");
@@ -392,15 +392,15 @@ void read_laminate(const Reader& r, Scene& scene) {
       t.fail(msg() << "one thickness per ply is needed (" << angles.size() << " plies)",
              msg() << "a list of " << angles.size() << " thicknesses");
     const auto items = t.items();
-    for (std::size_t i = 0; i < items.size(); ++i) thickness[i] = items[i].as_quantity(u::length, Limits::positive("ply thickness"));
+    for (std::size_t i = 0; i < items.size(); ++i) thickness[i] = items[i].as_quantity(u::length, Limits::positive("ply thickness").of(QuantityKind::size));
   } else {
-    std::fill(thickness.begin(), thickness.end(), t.as_quantity(u::length, Limits::positive("ply thickness")));
+    std::fill(thickness.begin(), thickness.end(), t.as_quantity(u::length, Limits::positive("ply thickness").of(QuantityKind::size)));
   }
   const auto materials = read_ply_materials(r.at("material", "a material name, {angle: material}, or one per ply"),
                                             scene, angles);
   lam.section = r.reference("section", names_of(scene.sections), "section", "sections");
   lam.elements_per_ply = int(r.integer_or("elements_per_ply", 1, Limits::interval(1, false, 64, false, "elements per ply")));
-  lam.element_size = r.quantity("element_size", u::length, Limits::positive("element size"));
+  lam.element_size = r.quantity("element_size", u::length, Limits::positive("element size").of(QuantityKind::size));
   lam.impact_x = lam.length / 2;
   lam.impact_y = lam.width / 2;
   if (const auto p = r.find("impact_point")) {
@@ -430,14 +430,14 @@ void read_laminate(const Reader& r, Scene& scene) {
     size.require_list("[x, y]", false);
     if (size.node().size() != 2) size.fail("expected [x, y]", "[x, y]");
     const auto xy = size.items();
-    lam.zone_x = xy[0].as_quantity(u::length, Limits::positive("zone size"));
-    lam.zone_y = xy[1].as_quantity(u::length, Limits::positive("zone size"));
+    lam.zone_x = xy[0].as_quantity(u::length, Limits::positive("zone size").of(QuantityKind::size));
+    lam.zone_y = xy[1].as_quantity(u::length, Limits::positive("zone size").of(QuantityKind::size));
     if (lam.impact_x - lam.zone_x / 2 <= 0 || lam.impact_x + lam.zone_x / 2 >= lam.length)
       xy[0].fail("the refined zone reaches the plate edge", "a zone inside the plate");
     if (lam.impact_y - lam.zone_y / 2 <= 0 || lam.impact_y + lam.zone_y / 2 >= lam.width)
       xy[1].fail("the refined zone reaches the plate edge", "a zone inside the plate");
     lam.zone_element_size = z->quantity("element_size", u::length,
-                                        Limits::interval(0, true, lam.element_size, false, "zone element size"));
+                                        Limits::interval(0, true, lam.element_size, false, "zone element size").of(QuantityKind::size));
   }
   lam.refinement_level = int(r.integer_or("refinement_level", 0, Limits::interval(0, false, 6, false, "refinement level")));
   lam.delaminating = angles.size() > 1 ? std::vector<bool>(angles.size() - 1, false) : std::vector<bool>{};
@@ -512,7 +512,7 @@ void read_impactor(const Reader& r, Scene& scene) {
   using S = ImpactorSpec::Shape;
   imp.shape = shape == "sphere" ? S::Sphere : shape == "flat_cylinder" ? S::FlatCylinder : shape == "cube" ? S::Cube
                                                                                                            : S::HemisphericalCylinder;
-  imp.diameter = r.quantity("diameter", u::length, Limits::positive("diameter"));
+  imp.diameter = r.quantity("diameter", u::length, Limits::positive("diameter").of(QuantityKind::size));
   const double radius = imp.diameter / 2;
   imp.length = imp.diameter;
   if (imp.shape == S::HemisphericalCylinder || imp.shape == S::FlatCylinder) {
@@ -527,7 +527,8 @@ void read_impactor(const Reader& r, Scene& scene) {
   // At most the radius: the mesher puts at least two elements on a quarter circumference, so a
   // larger size would be silently replaced by a mesh the user did not ask for.
   imp.element_size = r.quantity_or("element_size", u::length, imp.diameter / 8,
-                                   Limits::interval(0, true, radius, false, "impactor element size (at most the radius)"));
+                                   Limits::interval(0, true, radius, false, "impactor element size (at most the radius)")
+                                       .of(QuantityKind::size));
   imp.x = scene.laminate ? scene.laminate->impact_x : 0;
   imp.y = scene.laminate ? scene.laminate->impact_y : 0;
   if (const auto p = r.find("position")) {

@@ -134,11 +134,11 @@ MatCompositeDamage read_mat054(const Reader& r) {
                            Limits{std::nullopt, 0.0, false, false, "DFAILC (entered negative, -1 = 100 % compression)"});
   m.EFS = r.quantity_or("EFS", u::dimensionless, 0.0, Limits::non_negative("EFS"));
   // Card 6.
-  m.XC = r.quantity("XC", u::stress, Limits::positive("XC (entered positive)"));
-  m.XT = r.quantity("XT", u::stress, Limits::positive("XT"));
-  m.YC = r.quantity("YC", u::stress, Limits::positive("YC (entered positive)"));
-  m.YT = r.quantity("YT", u::stress, Limits::positive("YT"));
-  m.SC = r.quantity("SC", u::stress, Limits::positive("SC"));
+  m.XC = r.quantity("XC", u::stress, Limits::positive("XC (entered positive)").of(QuantityKind::strength));
+  m.XT = r.quantity("XT", u::stress, Limits::positive("XT").of(QuantityKind::strength));
+  m.YC = r.quantity("YC", u::stress, Limits::positive("YC (entered positive)").of(QuantityKind::strength));
+  m.YT = r.quantity("YT", u::stress, Limits::positive("YT").of(QuantityKind::strength));
+  m.SC = r.quantity("SC", u::stress, Limits::positive("SC").of(QuantityKind::strength));
   const std::string card = card_name(r);
   const int crit_default = card == "MAT_055" ? 55 : 54;
   m.CRIT = r.int_choice_or("CRIT", crit_default, {54, 55});

@@ -15,15 +15,15 @@ template <class Card>
 void read_orthotropic_constants(const Reader& r, Card& m) {
   namespace u = units;
   m.RO = r.quantity("RO", u::density, Limits::positive("density"));
-  m.EA = r.quantity("EA", u::stress, Limits::positive("EA"));
-  m.EB = r.quantity("EB", u::stress, Limits::positive("EB"));
-  m.EC = r.quantity("EC", u::stress, Limits::positive("EC"));
+  m.EA = r.quantity("EA", u::stress, Limits::positive("EA").of(QuantityKind::modulus));
+  m.EB = r.quantity("EB", u::stress, Limits::positive("EB").of(QuantityKind::modulus));
+  m.EC = r.quantity("EC", u::stress, Limits::positive("EC").of(QuantityKind::modulus));
   m.PRBA = r.quantity("PRBA", u::dimensionless);
   m.PRCA = r.quantity("PRCA", u::dimensionless);
   m.PRCB = r.quantity("PRCB", u::dimensionless);
-  m.GAB = r.quantity("GAB", u::stress, Limits::positive("GAB"));
-  m.GBC = r.quantity("GBC", u::stress, Limits::positive("GBC"));
-  m.GCA = r.quantity("GCA", u::stress, Limits::positive("GCA"));
+  m.GAB = r.quantity("GAB", u::stress, Limits::positive("GAB").of(QuantityKind::modulus));
+  m.GBC = r.quantity("GBC", u::stress, Limits::positive("GBC").of(QuantityKind::modulus));
+  m.GCA = r.quantity("GCA", u::stress, Limits::positive("GCA").of(QuantityKind::modulus));
   auto check = [&](const char* key, double nu, const char* ei, double e_i, const char* ej, double e_j) {
     const double bound = std::sqrt(e_i / e_j);
     if (std::abs(nu) < bound) return;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <optional>
 #include <string>
 #include <variant>
@@ -28,10 +29,13 @@ struct SourceLocation {
   std::string key_path;  // e.g. "materials.ply.EA"
 };
 
-// Start of an error message about a scene value: "file:line:col: key.path: ".
+// Start of an error message about a scene value: "file:line:col: key.path: " (just "file: " when
+// the line is unknown, or the override's text for a value given with --set).
 inline msg at(const SourceLocation& w) {
   msg m;
-  m << w.file << ":" << w.line << ":" << w.column << ": " << w.key_path << ": ";
+  m << w.file;
+  if (w.line > 0) m << ":" << w.line << ":" << w.column;
+  m << ": " << w.key_path << ": ";
   return m;
 }
 
@@ -184,7 +188,11 @@ struct ControlSpec {
   double erode_tsmin = 0;       // s: erode elements whose step falls below it (ERODE=1 with TSMIN); 0 = off
   double energy_ratio_limit = 1.5;  // stop if the energy ratio exceeds it (energy is being created); 0 = off
   double hourglass_warn_ratio = 0.1;  // warn when E_hg > ratio * E_int
-  long max_cycles = 0;          // 0 = no limit
+  long max_cycles = 0;          // 0 = no limit (LS-DYNA ENDCYC: the run stops there)
+  // Refusals before the run (docs/commands.md, "Input limits"): a mesh estimated above
+  // max_elements, a run whose estimated cycle count exceeds cycle_limit. 0 = the default limit.
+  long max_elements = 0;
+  long cycle_limit = 0;
   int threads = 0;              // 0 = OpenMP default
 };
 
@@ -344,6 +352,15 @@ struct Scene {
   std::vector<ContactSpec> contacts;
   Vec3 gravity{0, 0, 0};                 // m/s^2, body-force acceleration on every node (*LOAD_BODY)
   std::optional<CouponSpec> coupon;      // `coupon:` section: fracture-coupon history columns
+  // Where each key the loader looked up was given, by key path ("laminate.element_size",
+  // "mesh.boxes[0].elements"): checks made after loading point the user at the right line.
+  std::map<std::string, SourceLocation> key_locations;
+
+  // The location of `key_path`, or the scene file with the key path when it was not given.
+  SourceLocation where_of(const std::string& key_path) const {
+    const auto it = key_locations.find(key_path);
+    return it != key_locations.end() ? it->second : SourceLocation{file, 0, 0, key_path};
+  }
 };
 
 }  // namespace plyimpact::config

@@ -39,7 +39,7 @@ std::string fmt(double v) { return msg() << v; }
 ControlSpec read_control(const Reader& r) {
   r.require_map("a mapping with termination_time and optional tssfac, dt_min_ratio, ...");
   r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "energy_ratio_limit", "erode_tsmin",
-                "hourglass_warn_ratio", "max_cycles", "threads"});
+                "hourglass_warn_ratio", "max_cycles", "max_elements", "cycle_limit", "threads"});
   ControlSpec c;
   c.termination_time = r.quantity("termination_time", u::time, Limits::positive("termination time"));
   c.tssfac = r.quantity_or("tssfac", u::dimensionless, c.tssfac, Limits::interval(0, true, 1, false, "tssfac"));
@@ -51,6 +51,8 @@ ControlSpec read_control(const Reader& r) {
   c.hourglass_warn_ratio = r.quantity_or("hourglass_warn_ratio", u::dimensionless, c.hourglass_warn_ratio,
                                          Limits::positive("hourglass_warn_ratio"));
   c.max_cycles = r.integer_or("max_cycles", c.max_cycles, Limits::non_negative("max_cycles"));
+  c.max_elements = r.integer_or("max_elements", c.max_elements, Limits::at_least(1, "max_elements"));
+  c.cycle_limit = r.integer_or("cycle_limit", c.cycle_limit, Limits::at_least(1, "cycle_limit"));
   c.threads = static_cast<int>(r.integer_or("threads", c.threads, Limits::interval(0, false, 4096, false, "threads")));
   return c;
 }
@@ -99,7 +101,7 @@ MatElastic read_elastic(const Reader& r) {
   r.allow_keys({"card", "RO", "E", "PR"});
   MatElastic m;
   m.RO = r.quantity("RO", u::density, Limits::positive("density"));
-  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus").of(QuantityKind::modulus));
   m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
   return m;
 }
@@ -108,7 +110,7 @@ MatRigid read_rigid(const Reader& r) {
   r.allow_keys({"card", "RO", "E", "PR", "CMO", "CON1", "CON2"});
   MatRigid m;
   m.RO = r.quantity("RO", u::density, Limits::positive("density"));
-  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus (used for the contact stiffness)"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus (used for the contact stiffness)").of(QuantityKind::modulus));
   m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
   m.CMO = r.int_choice_or("CMO", 0, {0, 1});
   m.CON1 = r.int_choice_or("CON1", 0, {0, 1, 2, 3, 4, 5, 6, 7});
@@ -123,10 +125,10 @@ MatPlasticKinematic read_plastic_kinematic(const Reader& r) {
   r.allow_keys({"card", "RO", "E", "PR", "SIGY", "ETAN", "BETA", "SRC", "SRP", "FS"});
   MatPlasticKinematic m;
   m.RO = r.quantity("RO", u::density, Limits::positive("density"));
-  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus").of(QuantityKind::modulus));
   m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
-  m.SIGY = r.quantity("SIGY", u::stress, Limits::positive("yield stress"));
-  m.ETAN = r.quantity_or("ETAN", u::stress, 0.0, Limits::interval(0, false, m.E, true, "tangent modulus (below E)"));
+  m.SIGY = r.quantity("SIGY", u::stress, Limits::positive("yield stress").of(QuantityKind::strength));
+  m.ETAN = r.quantity_or("ETAN", u::stress, 0.0, Limits::interval(0, false, m.E, true, "tangent modulus (below E)").of(QuantityKind::modulus));
   m.BETA = r.quantity_or("BETA", u::dimensionless, 0.0, Limits::interval(0, false, 1, false, "BETA"));
   m.SRC = r.quantity_or("SRC", u::frequency, 0.0, Limits::non_negative("SRC"));
   m.SRP = r.quantity_or("SRP", u::dimensionless, 0.0, Limits::non_negative("SRP"));
@@ -139,9 +141,9 @@ MatPiecewiseLinear read_piecewise_linear(const Reader& r) {
   r.allow_keys({"card", "RO", "E", "PR", "SIGY", "ETAN", "FAIL", "C", "P", "LCSS"});
   MatPiecewiseLinear m;
   m.RO = r.quantity("RO", u::density, Limits::positive("density"));
-  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus"));
+  m.E = r.quantity("E", u::stress, Limits::positive("Young's modulus").of(QuantityKind::modulus));
   m.PR = r.quantity("PR", u::dimensionless, Limits::interval(-1, true, 0.5, true, "Poisson's ratio"));
-  m.ETAN = r.quantity_or("ETAN", u::stress, 0.0, Limits::interval(0, false, m.E, true, "tangent modulus (below E)"));
+  m.ETAN = r.quantity_or("ETAN", u::stress, 0.0, Limits::interval(0, false, m.E, true, "tangent modulus (below E)").of(QuantityKind::modulus));
   m.FAIL = r.quantity_or("FAIL", u::dimensionless, 0.0, Limits::non_negative("failure strain"));
   m.C = r.quantity_or("C", u::frequency, 0.0, Limits::non_negative("C"));
   m.P = r.quantity_or("P", u::dimensionless, 0.0, Limits::non_negative("P"));
@@ -154,7 +156,7 @@ MatPiecewiseLinear read_piecewise_linear(const Reader& r) {
       const auto xy = pt.items();
       if (xy.size() != 2) pt.fail("expected a [strain, stress] pair", curve_text);
       const double e = xy[0].as_quantity(u::dimensionless, Limits::non_negative("plastic strain"));
-      const double sy = xy[1].as_quantity(u::stress, Limits::positive("yield stress"));
+      const double sy = xy[1].as_quantity(u::stress, Limits::positive("yield stress").of(QuantityKind::strength));
       if (m.LCSS_strain.empty() ? e != 0.0 : e <= m.LCSS_strain.back())
         xy[0].fail("plastic strains must start at 0 and increase", curve_text);
       if (!m.LCSS_stress.empty() && sy < m.LCSS_stress.back())
@@ -164,7 +166,7 @@ MatPiecewiseLinear read_piecewise_linear(const Reader& r) {
     }
     m.SIGY = m.LCSS_stress.front();
   } else {
-    m.SIGY = r.quantity("SIGY", u::stress, Limits::positive("yield stress (or give the curve LCSS)"));
+    m.SIGY = r.quantity("SIGY", u::stress, Limits::positive("yield stress (or give the curve LCSS)").of(QuantityKind::strength));
   }
   return m;
 }
@@ -309,6 +311,26 @@ MeshFileSpec read_mesh_file(const Reader& r, const detail::Context& ctx) {
   return spec;
 }
 
+// Two boxes that share volume would both get elements there (twice the mass and stiffness); boxes
+// may touch along faces, edges or corners (merge_nodes joins them).
+void refuse_overlap(const Reader& box, const BoxSpec& spec, const std::vector<BoxSpec>& earlier) {
+  for (std::size_t j = 0; j < earlier.size(); ++j) {
+    const BoxSpec& o = earlier[j];
+    bool overlap = true;
+    for (int d = 0; d < 3; ++d) {
+      const double lo = std::max(spec.origin[d], o.origin[d]);
+      const double hi = std::min(spec.origin[d] + spec.size[d], o.origin[d] + o.size[d]);
+      const double tol = 1e-9 * std::max(spec.size[d], o.size[d]);
+      overlap = overlap && hi - lo > tol;
+    }
+    if (overlap)
+      box.fail(msg() << "the box overlaps mesh.boxes[" << j << "] (part '" << o.part << "', " << o.where.file << ":"
+                     << o.where.line << ":" << o.where.column << "): their elements would share volume, doubling "
+                     << "mass and stiffness there",
+               "boxes that touch at most along faces (move origin or change size of one of them)");
+  }
+}
+
 std::vector<BoxSpec> read_mesh(const Reader& r, const Scene& scene) {
   r.require_map("a mapping with 'boxes' or 'file'");
   r.allow_keys({"boxes", "merge_nodes", "file", "length_unit"});
@@ -327,14 +349,15 @@ std::vector<BoxSpec> read_mesh(const Reader& r, const Scene& scene) {
     BoxSpec spec;
     spec.part = b.reference("part", parts, "part", "parts");
     spec.origin = b.vec3_or("origin", u::length, spec.origin);
-    spec.size = b.vec3("size", u::length, Limits::positive("box size"));
+    spec.size = b.vec3("size", u::length, Limits::positive("box size").of(QuantityKind::size));
     const Reader e = b.at("elements", "a list [nx, ny, nz] of integers >= 1");
     e.require_list("a list [nx, ny, nz] of integers >= 1", false);
     if (e.node().size() != 3) e.fail("expected exactly 3 element counts", "a list [nx, ny, nz] of integers >= 1");
     const auto counts = e.items();
     for (int i = 0; i < 3; ++i)
-      spec.elements[i] = static_cast<int>(counts[i].as_integer(Limits::at_least(1, "element count")));
+      spec.elements[i] = counts[i].as_int(Limits::at_least(1, "element count"));
     spec.where = b.where();
+    refuse_overlap(b, spec, out);
     out.push_back(std::move(spec));
   }
   return out;
@@ -584,8 +607,8 @@ std::vector<RigidWallSpec> read_rigid_walls(const Reader& r, const Scene& scene)
       sz->require_list("[length_u, length_v] of the finite wall", false);
       if (sz->node().size() != 2) sz->fail("expected two lengths", "[length_u, length_v]");
       const auto it = sz->items();
-      spec.length_u = it[0].as_quantity(u::length, Limits::positive("wall length"));
-      spec.length_v = it[1].as_quantity(u::length, Limits::positive("wall width"));
+      spec.length_u = it[0].as_quantity(u::length, Limits::positive("wall length").of(QuantityKind::size));
+      spec.length_v = it[1].as_quantity(u::length, Limits::positive("wall width").of(QuantityKind::size));
       Vec3 uu = unit_vector(w, "u", {1, 0, 0});
       const double un = uu[0] * spec.normal[0] + uu[1] * spec.normal[1] + uu[2] * spec.normal[2];
       for (int d = 0; d < 3; ++d) uu[d] -= un * spec.normal[d];
@@ -756,6 +779,10 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
   // A laminate (and impactor) generate their own parts and mesh; `parts` and `mesh` are then optional.
   const auto laminate = root.find("laminate");
   const auto impactor = root.find("impactor");
+  if (laminate && root.has("parts"))
+    root.at("parts", "").fail("parts beside a laminate would have no elements (the laminate makes one part per ply "
+                              "and the impactor its own; a scene has either a laminate or a mesh)",
+                              "a laminate without parts, or parts with mesh.boxes or mesh.file");
   if (root.has("parts") || (!laminate && !impactor))
     scene.parts = read_parts(root.at("parts", "a mapping of part name -> {material, section}"), scene);
   if (const auto mesh = root.find("mesh")) {
@@ -791,6 +818,19 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
   return scene;
 }
 
+// The scene's one YAML document. yaml-cpp's Load reads the first document and drops the rest
+// silently, so a file holding two (separated by '---') would run with half of what it says.
+YAML::Node load_single_document(const std::string& yaml_text, const std::string& file_label) {
+  std::vector<YAML::Node> docs = YAML::LoadAll(yaml_text);
+  for (std::size_t i = 1; i < docs.size(); ++i)
+    if (docs[i].IsDefined() && !docs[i].IsNull())
+      throw InputError(msg() << detail::location(file_label, docs[i].Mark()) << ": (top level): a second YAML "
+                             << "document (after '---') would be ignored; found " << docs.size()
+                             << " documents; allowed one scene per file (remove the '---' line and merge the "
+                             << "sections, or put each scene in its own file)");
+  return docs.empty() ? YAML::Node() : docs.front();
+}
+
 }  // namespace
 
 Scene load_scene_from_string(const std::string& yaml_text, const std::string& file_label,
@@ -800,7 +840,7 @@ Scene load_scene_from_string(const std::string& yaml_text, const std::string& fi
   try {
     YAML::Node root;
     try {
-      root = YAML::Load(yaml_text);
+      root = load_single_document(yaml_text, file_label);
     } catch (const YAML::Exception& e) {
       throw InputError(msg() << detail::location(file_label, e.mark) << ": YAML syntax error: " << e.msg
                              << "; found text that is not valid YAML here (or on the line before)"
@@ -814,6 +854,7 @@ Scene load_scene_from_string(const std::string& yaml_text, const std::string& fi
   }
   scene.file = file_label;
   scene.name = std::filesystem::path(file_label).stem().string();
+  scene.key_locations = std::move(ctx.key_locations);
   return scene;
 }
 

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <set>
 #include <sstream>
@@ -181,8 +182,11 @@ Reader Reader::at(std::string_view key, const std::string& expected) const {
 std::optional<Reader> Reader::find(std::string_view key) const {
   if (!node_.IsMap()) return std::nullopt;
   for (auto it = node_.begin(); it != node_.end(); ++it)  // first match, as node[key] would
-    if (it->first.IsScalar() && it->first.Scalar() == key)
-      return child(it->second, path_.empty() ? std::string(key) : path_ + "." + std::string(key), it->first.Mark());
+    if (it->first.IsScalar() && it->first.Scalar() == key) {
+      Reader r = child(it->second, path_.empty() ? std::string(key) : path_ + "." + std::string(key), it->first.Mark());
+      ctx_->key_locations[r.path()] = r.where();
+      return r;
+    }
   return std::nullopt;
 }
 
@@ -238,10 +242,20 @@ double Reader::as_quantity(units::Dimension d, const Limits& lim) const {
   } catch (const units::UnitError& e) {
     fail(e.problem(), e.allowed());
   }
+  const std::string key = path_.substr(path_.rfind('.') + 1);
   if (!lim.ok(v)) {
     const std::string label = lim.label.empty() ? "the value" : lim.label;
     fail(label + " must be " + lim.text(), msg() << quoted(node_.Scalar()) << " (= " << fmt(v) << " SI)",
-         msg() << (path_.substr(path_.rfind('.') + 1)) << " " << lim.text());
+         msg() << key << " " << lim.text());
+  }
+  if (const auto kind = lim.kind ? lim.kind : default_kind(d)) {
+    const PlausibleRange& range = plausible_range(*kind);
+    if (!is_plausible(v, range))
+      fail(msg() << fmt(v) << (*range.unit ? " " : "") << range.unit << " is outside the plausible range of "
+                 << range.name,
+           msg() << quoted(node_.Scalar()) << " (= " << fmt(v) << " SI)",
+           msg() << key << " with " << range_text(range) << " (SI; " << range.reason
+                 << "; see 'Input limits' in docs/commands.md)");
   }
   return v;
 }
@@ -262,11 +276,25 @@ long Reader::as_integer(const Limits& lim) const {
   try {
     v = units::parse_integer(node_.Scalar());
   } catch (const units::UnitError&) {
-    fail("expected an integer", allowed);
+    const std::string& s = node_.Scalar();
+    const bool digits = s.find_first_not_of("+-0123456789 ") == std::string::npos &&
+                        s.find_first_of("0123456789") != std::string::npos;
+    fail(digits ? "the integer is too large to represent" : "expected an integer", allowed);
   }
   if (!lim.ok(static_cast<double>(v)))
     fail((lim.label.empty() ? "the value" : lim.label) + " must be " + lim.text(), allowed);
   return v;
+}
+
+int Reader::as_int(const Limits& lim) const {
+  const long v = as_integer(lim);
+  Limits l = lim;  // the key's own bounds, cut to what an int holds
+  if (!l.lo || *l.lo < double(INT_MIN)) l.lo = double(INT_MIN), l.lo_open = false;
+  if (!l.hi || *l.hi > double(INT_MAX)) l.hi = double(INT_MAX), l.hi_open = false;
+  if (!l.ok(double(v)))
+    fail((lim.label.empty() ? "the value" : lim.label) + " is out of range (it would wrap around)",
+         "an integer " + l.text());
+  return static_cast<int>(v);
 }
 
 Vec3 Reader::as_vec3(units::Dimension d, const Limits& lim) const {
@@ -303,6 +331,11 @@ double Reader::angle_or(std::string_view key, double fallback_rad) const {
 long Reader::integer_or(std::string_view key, long fallback, const Limits& lim) const {
   const auto r = find(key);
   return r ? r->as_integer(lim) : fallback;
+}
+
+int Reader::int_or(std::string_view key, int fallback, const Limits& lim) const {
+  const auto r = find(key);
+  return r ? r->as_int(lim) : fallback;
 }
 
 int Reader::int_choice_or(std::string_view key, int fallback, std::initializer_list<int> choices) const {

@@ -8,6 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <initializer_list>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "config/overrides.hpp"
+#include "config/plausible_range.hpp"
 #include "config/scene.hpp"
 #include "core/types.hpp"
 #include "core/units.hpp"
@@ -32,6 +34,9 @@ struct Context {
   std::string file;
   units::UnitSystem unit_system;  // set once `units:` has been read
   std::vector<OverrideNode> override_nodes{};  // empty when the scene is read without overrides
+  // Where every key that was looked up sits ("laminate.element_size" -> file:line:col), so checks
+  // made after reading (mesh size, cycle count) can point at the key that causes them.
+  mutable std::map<std::string, SourceLocation> key_locations{};
 };
 
 // Applies `overrides` in order to the tree `root` (a mapping) and records in ctx the nodes they
@@ -39,11 +44,20 @@ struct Context {
 // is not YAML) throw InputError naming the override; everything else is left to the scene reader.
 void apply_overrides(YAML::Node& root, const std::vector<SceneOverride>& overrides, Context& ctx);
 
-// Allowed range of a number; text() gives "> 0", "in (0, 1]", ...
+// Allowed range of a number; text() gives "> 0", "in (0, 1]", ... A quantity is also held to the
+// plausible range of its kind (config/plausible_range.hpp): the kind given with of(), else the
+// default kind of its dimension.
 struct Limits {
   std::optional<double> lo, hi;
   bool lo_open = false, hi_open = false;
   std::string label;  // what the number is, for "<label> must be > 0"
+  std::optional<QuantityKind> kind{};
+
+  Limits of(QuantityKind k) const {
+    Limits l = *this;
+    l.kind = k;
+    return l;
+  }
 
   static Limits none() { return {}; }
   static Limits positive(std::string label) { return {0.0, std::nullopt, true, false, std::move(label)}; }
@@ -108,6 +122,8 @@ class Reader {
   double as_quantity(units::Dimension d, const Limits& lim = Limits::none()) const;  // SI
   double as_angle() const;                                                           // rad
   long as_integer(const Limits& lim = Limits::none()) const;
+  // An integer that must also fit an int: out-of-range values are refused, never wrapped.
+  int as_int(const Limits& lim) const;
   Vec3 as_vec3(units::Dimension d, const Limits& lim = Limits::none()) const;
   // Scalar that must be one of `choices` (exact match).
   std::string as_choice(const std::vector<std::string>& choices) const;
@@ -118,6 +134,7 @@ class Reader {
                      const Limits& lim = Limits::none()) const;
   double angle_or(std::string_view key, double fallback_rad) const;
   long integer_or(std::string_view key, long fallback, const Limits& lim = Limits::none()) const;
+  int int_or(std::string_view key, int fallback, const Limits& lim) const;
   int int_choice_or(std::string_view key, int fallback, std::initializer_list<int> choices) const;
   Vec3 vec3(std::string_view key, units::Dimension d, const Limits& lim = Limits::none()) const;
   Vec3 vec3_or(std::string_view key, units::Dimension d, Vec3 fallback, const Limits& lim = Limits::none()) const;

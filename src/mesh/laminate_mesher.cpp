@@ -17,27 +17,35 @@ struct Grid {
   std::vector<int> ply_layer0;   // first z level of each ply; the ply's top is ply_layer0[p + 1]
 };
 
-Grid make_grid(const config::LaminateSpec& lam) {
-  Grid g;
-  AxisSpec ax, ay;
-  ax.hi = lam.symmetry[0] ? lam.length / 2 : lam.length;
-  ay.hi = lam.symmetry[1] ? lam.width / 2 : lam.width;
+}  // namespace
+
+AxisSpec laminate_axis(const config::LaminateSpec& lam, int axis) {
+  const bool x = axis == 0;
+  const double side = x ? lam.length : lam.width, impact = x ? lam.impact_x : lam.impact_y;
+  AxisSpec a;
+  a.hi = lam.symmetry[x ? 0 : 1] ? side / 2 : side;
   for (const auto& s : lam.supports)
     if (s.kind == config::SupportSpec::Kind::Window) {
-      ax.breaks.insert(ax.breaks.end(), {lam.impact_x - s.window_x / 2, lam.impact_x + s.window_x / 2});
-      ay.breaks.insert(ay.breaks.end(), {lam.impact_y - s.window_y / 2, lam.impact_y + s.window_y / 2});
+      const double w = x ? s.window_x : s.window_y;
+      a.breaks.insert(a.breaks.end(), {impact - w / 2, impact + w / 2});
     }
   if (lam.zone_element_size > 0) {
-    ax.zone_lo = lam.impact_x - lam.zone_x / 2;
-    ax.zone_hi = lam.impact_x + lam.zone_x / 2;
-    ay.zone_lo = lam.impact_y - lam.zone_y / 2;
-    ay.zone_hi = lam.impact_y + lam.zone_y / 2;
+    const double zone = x ? lam.zone_x : lam.zone_y;
+    a.zone_lo = impact - zone / 2;
+    a.zone_hi = impact + zone / 2;
   }
-  ax.size = ay.size = lam.element_size;
-  ax.zone_size = ay.zone_size = lam.zone_element_size;
-  ax.level = ay.level = lam.refinement_level;
-  g.bx = axis_bands(ax);
-  g.by = axis_bands(ay);
+  a.size = lam.element_size;
+  a.zone_size = lam.zone_element_size;
+  a.level = lam.refinement_level;
+  return a;
+}
+
+namespace {
+
+Grid make_grid(const config::LaminateSpec& lam) {
+  Grid g;
+  g.bx = axis_bands(laminate_axis(lam, 0));
+  g.by = axis_bands(laminate_axis(lam, 1));
   g.x = band_nodes(g.bx);
   g.y = band_nodes(g.by);
   double z0 = 0;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "config/scene.hpp"
+#include "mesh/axis_grid.hpp"
 #include "mesh/mesh.hpp"
 
 namespace plyimpact::mesh {
@@ -16,5 +17,9 @@ namespace plyimpact::mesh {
 /// interfaces and the laminate's generated node sets (supports, symmetry_x, symmetry_y).
 /// @throws InputError if gmsh fails or its mesh is not the expected structured grid.
 Mesh mesh_laminate(const config::Scene& scene);
+
+/// The 1-D node distribution the mesher uses along x (axis 0) or y (axis 1): extent, break points,
+/// refined zone, sizes and level (mesh/size_estimate counts elements from it without gmsh).
+AxisSpec laminate_axis(const config::LaminateSpec& lam, int axis);
 
 }  // namespace plyimpact::mesh

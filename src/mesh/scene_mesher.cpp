@@ -3,18 +3,46 @@
 #include <gmsh.h>
 
 #include <filesystem>
+#include <new>
 #include <numeric>
 
 #include "mesh/gmsh_session.hpp"
 #include "mesh/impactor_mesher.hpp"
 #include "mesh/laminate_mesher.hpp"
 #include "mesh/msh_reader.hpp"
+#include "mesh/size_estimate.hpp"
 
 namespace plyimpact::mesh {
 
+namespace {
+
+// Runs one mesher; a failure inside it (gmsh's messages name no scene line, and running out of
+// memory names nothing) becomes an input error at the key that sets the mesh's size.
+template <class F>
+void with_key(const config::Scene& scene, const std::string& key, const MeshSizeEstimate& estimate, F&& mesher) {
+  try {
+    mesher();
+  } catch (const std::bad_alloc&) {
+    throw InputError(config::at(scene.where_of(key))
+                     << "out of memory while meshing (estimate: " << estimate.elements << " elements, "
+                     << estimate.account << "); found a mesh larger than this machine can hold; allowed a "
+                     << "coarser " << key << " (or fewer plies, a lower refinement)");
+  } catch (const InputError& e) {
+    throw InputError(config::at(scene.where_of(key)) << e.what() << " (the mesh made from " << key
+                                                     << " and the sizes beside it)");
+  }
+}
+
+}  // namespace
+
 Mesh mesh_scene(const config::Scene& scene) {
-  Mesh m = scene.mesh_file ? read_msh(scene) : scene.laminate ? mesh_laminate(scene) : mesh_boxes(scene);
-  if (scene.impactor) add_impactor(scene, m);
+  const MeshSizeEstimate estimate = estimate_mesh_size(scene);
+  require_mesh_fits(scene, estimate, physical_memory_bytes());
+  Mesh m;
+  if (scene.mesh_file) m = read_msh(scene);
+  else if (scene.laminate) with_key(scene, "laminate.element_size", estimate, [&] { m = mesh_laminate(scene); });
+  else m = mesh_boxes(scene);
+  if (scene.impactor) with_key(scene, "impactor.element_size", estimate, [&] { add_impactor(scene, m); });
   return m;
 }
 

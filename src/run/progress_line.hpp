@@ -4,10 +4,15 @@
 
 #include <chrono>
 #include <iosfwd>
+#include <string>
 
 #include "run/run_observer.hpp"
 
 namespace plyimpact::run {
+
+// "12.3s", "4m05s" or, past 100 hours, "1.2e+03h"; "?" for a negative or non-finite duration (no
+// estimate yet), never a wrapped-around integer.
+std::string format_duration(double seconds);
 
 class ProgressLine : public RunObserver {
  public:

@@ -36,6 +36,8 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_rel(s.control.dt_min_ratio, 1.0e-4);
   expect_rel(s.control.hourglass_warn_ratio, 0.05);
   EXPECT_EQ(s.control.max_cycles, 100000);
+  EXPECT_EQ(s.control.max_elements, 5000000);
+  EXPECT_EQ(s.control.cycle_limit, 200000000);
   EXPECT_EQ(s.control.threads, 2);
   expect_rel(s.output.interval, 1e-6);
   expect_rel(s.output.history_interval, 1e-7);
@@ -50,7 +52,7 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_rel(e.E, 2.1e11);
   expect_rel(e.PR, 0.3);
   EXPECT_EQ(steel.where.key_path, "materials.steel");
-  EXPECT_EQ(steel.where.line, 16);
+  EXPECT_EQ(steel.where.line, 18);
   EXPECT_EQ(steel.where.column, 5);
 
   const cfg::MaterialSpec& ply = s.materials[1];
@@ -73,7 +75,7 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_vec(o.axes.V, {0, 0, 1});
   expect_rel(o.axes.BETA, 0.5);
   EXPECT_EQ(ply.where.file, kScenes + "good_full.yaml");
-  EXPECT_EQ(ply.where.line, 21);
+  EXPECT_EQ(ply.where.line, 23);
   EXPECT_EQ(ply.where.column, 5);
 
   ASSERT_EQ(s.sections.size(), 2u);
@@ -113,7 +115,7 @@ TEST(SceneLoader, GoodFullRoundTrip) {
   expect_vec(s.boxes[1].size, {0.1, 0.01, 0.00025});
   EXPECT_EQ(s.boxes[1].elements, (std::array<int, 3>{50, 5, 1}));
   EXPECT_EQ(s.boxes[1].where.key_path, "mesh.boxes[1]");
-  EXPECT_EQ(s.boxes[1].where.line, 55);
+  EXPECT_EQ(s.boxes[1].where.line, 57);
   EXPECT_EQ(s.boxes[1].where.column, 7);
 
   using K = cfg::NodeSetSpec::Kind;
