@@ -193,8 +193,11 @@ TEST(InterfaceOutput, CscanShowsTheShallowestDelaminationAndTheUnion) {
       EXPECT_TRUE(std::isnan(shallow->GetTuple1(c)));
       EXPECT_EQ(first->GetTuple1(c), 0);
     }
-    if (in1) EXPECT_DOUBLE_EQ(deep->GetTuple1(c), 0.8);
-    else if (in3) EXPECT_DOUBLE_EQ(deep->GetTuple1(c), 0.25);
+    if (in1) {
+      EXPECT_DOUBLE_EQ(deep->GetTuple1(c), 0.8);
+    } else if (in3) {
+      EXPECT_DOUBLE_EQ(deep->GetTuple1(c), 0.25);
+    }
     if (count->GetTuple1(c) > 0) union_area += (b[1] - b[0]) * (b[3] - b[2]);
   }
   EXPECT_NEAR(union_area, kCrack1.area() + kCrack3.area() - kOverlap, 1e-12 * 8e-6);
