@@ -311,8 +311,12 @@ MeshFileSpec read_mesh_file(const Reader& r, const detail::Context& ctx) {
   return spec;
 }
 
-// Two boxes that share volume would both get elements there (twice the mass and stiffness); boxes
-// may touch along faces, edges or corners (merge_nodes joins them).
+// Two boxes that share volume would both get elements there, welded into one body by merge_nodes
+// (twice the mass and stiffness); boxes may touch along faces, edges or corners. With merge_nodes:
+// false the boxes are separate bodies and an overlap is theirs to resolve (an initial penetration
+// the contact reports, or a punch in a slot cut into the other body), so it is allowed.
+bool read_merge_nodes(const Reader& mesh);
+
 void refuse_overlap(const Reader& box, const BoxSpec& spec, const std::vector<BoxSpec>& earlier) {
   for (std::size_t j = 0; j < earlier.size(); ++j) {
     const BoxSpec& o = earlier[j];
@@ -357,7 +361,7 @@ std::vector<BoxSpec> read_mesh(const Reader& r, const Scene& scene) {
     for (int i = 0; i < 3; ++i)
       spec.elements[i] = counts[i].as_int(Limits::at_least(1, "element count"));
     spec.where = b.where();
-    refuse_overlap(b, spec, out);
+    if (read_merge_nodes(r)) refuse_overlap(b, spec, out);
     out.push_back(std::move(spec));
   }
   return out;

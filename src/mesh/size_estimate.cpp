@@ -66,7 +66,9 @@ MeshSizeEstimate impactor_estimate(const config::ImpactorSpec& s) {
   using Shape = config::ImpactorSpec::Shape;
   const double r = s.diameter / 2, h = s.element_size, pi = std::numbers::pi;
   const auto count = [&](double length) { return std::max(1.0, std::ceil(length / h - 1e-9)); };
-  const double n = std::max(2.0, std::ceil(0.5 * pi * r / h - 1e-9)), k_sphere = count(r * (1 - 0.5 / std::sqrt(3.0))),
+  // N rounded up to even, as the mesher does (the pole is then a node).
+  const double n_quarter = std::max(2.0, std::ceil(0.5 * pi * r / h - 1e-9));
+  const double n = n_quarter + std::fmod(n_quarter, 2.0), k_sphere = count(r * (1 - 0.5 / std::sqrt(3.0))),
                k_ring = count(r * (1 - 0.5 / std::sqrt(2.0)));
   MeshSizeEstimate e;
   switch (s.shape) {

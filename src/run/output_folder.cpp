@@ -78,7 +78,8 @@ Results list_results(const fs::path& dir, const std::string& scene_name, bool ma
     }
     if (file == kFolderMarker || !it->is_regular_file() || !is_result_file(file)) continue;
     const bool series = (file.ends_with(".vtu") || file.ends_with(".pvd")) && !is_interface_output(file);  // named after their scene
-    const bool named_ours = !series || is_frame_of(file, scene_name) || file == scene_name + ".pvd";
+    const bool named_ours = !series || is_frame_of(file, scene_name) || is_frame_of(file, scene_name + "_rigid") ||
+                            file == scene_name + ".pvd";
     (marker_is_ours && named_ours ? r.own : r.foreign).push_back(it->path());
   }
   return r;
