@@ -31,79 +31,30 @@
 // element step, so the combined step costs about a third more cycles, which the CI size affords.
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 #include <sstream>
-#include <string>
-#include <vector>
 
-#include "config/scene_loader.hpp"
 #include "core/state_io.hpp"
-#include "interface/interface_tiebreaks.hpp"
-#include "mesh/scene_mesher.hpp"
-#include "model/model.hpp"
-#include "solver/solver.hpp"
+#include "dcb_beam.hpp"
 
 namespace plyimpact {
 namespace {
 
-constexpr double E11 = 120e9, E22 = 10e9, G13 = 5e9;   // Pa
-constexpr double h = 1.5e-3, b = 2e-3, a0 = 25e-3;      // m: arm thickness, width, pre-crack
-constexpr double GIc = 200;                             // J/m^2
-constexpr double kRamp = 0.6e-3, kEnd = 2.5e-3;         // s
-// m/s, each arm: a total opening of 2 V (kEnd - kRamp / 2) = 3.1 mm at the end, 2.5 times the
-// critical opening delta_c = 8 (a0 + Delta)^2 sqrt(G_Ic / (12 E11 h^3)) = 1.24 mm (the crack front then
-// near a + Delta = 44 mm, as delta grows with (a + Delta)^2 on the propagation branch). The arms'
-// kinetic energy stays below 1 % of their strain energy at delta_c.
-constexpr double kOpeningRate = 0.7;
+using namespace dcb;
 
-std::string dcb_scene() {
-  std::ostringstream y;
-  y << "units: mm-t-s-MPa\n"
-       "control: {termination_time: " << kEnd << "}\n"
-       "materials:\n"
-       "  ud:\n"
-       "    card: MAT_002\n"
-       "    RO: 1500 kg/m^3\n"
-       "    EA: 120 GPa\n    EB: 10 GPa\n    EC: 10 GPa\n"
-       "    PRBA: 0.025\n    PRCA: 0.025\n    PRCB: 0.45\n"
-       "    GAB: 5 GPa\n    GBC: 3.5 GPa\n    GCA: 5 GPa\n"
-       "    AOPT: 2\n    A: [1, 0, 0]\n    D: [0, 1, 0]\n"
-       "sections:\n  arm: {ELFORM: 1, IHQ: 6, QM: 1}\n"
-       "laminate:\n"
-       "  length: 60\n  width: 2\n  ply_thickness: 1.5\n  stacking: [0, 0]\n"
-       "  material: ud\n  section: arm\n  elements_per_ply: 2\n  element_size: 1\n"
-       "  interfaces: {select: [1], model: tiebreak, OPTION: 9, NFLS: 20 MPa, SFLS: 20 MPa, ERATEN: 200 J/m^2,\n"
-       "               ERATES: 400 J/m^2, PARAM: 1, CN: 100 kN/mm^3, CT2CN: 1, precrack: {x: [0, 25]}}\n"
-       "node_sets:\n"
-       "  tip_top: {box: {min: [-0.01, -1, 1.6], max: [0.01, 3, 3.1]}}\n"
-       "  tip_bottom: {box: {min: [-0.01, -1, -0.1], max: [0.01, 3, 1.4]}}\n"
-       "boundary_conditions:\n";
-  // Velocity v(t) = V (1 - cos(pi t / t_r)) / 2 up to t_r, then V, sampled finely enough that the
-  // piecewise-linear curve is smooth to 0.3 % of V.
-  for (int side = 0; side < 2; ++side) {
-    y << "  - {node_set: " << (side == 0 ? "tip_top" : "tip_bottom") << ", velocity: {dofs: [z], curve: [";
-    const double sign = side == 0 ? 1 : -1;
-    for (int i = 0; i <= 24; ++i) {
-      const double t = kRamp * i / 24;
-      y << "[" << t << " s, " << sign * kOpeningRate * 0.5 * (1 - std::cos(std::numbers::pi * t / kRamp)) << " m/s], ";
-    }
-    y << "[" << kEnd << " s, " << sign * kOpeningRate << " m/s]]}}\n";
-  }
-  return y.str();
-}
+// s: the opening 2 V (kEnd - kRamp / 2) = 3.1 mm at the end is 2.5 times the critical opening
+// delta_c = 8 (a0 + Delta)^2 sqrt(G_Ic / (12 E11 h^3)) = 1.24 mm (the crack front then near
+// a + Delta = 44 mm, as delta grows with (a + Delta)^2 on the propagation branch).
+constexpr double kEnd = 2.5e-3;
 
-double williams_delta() {
-  const double gamma = 1.18 * std::sqrt(E11 * E22) / G13;
-  const double r = gamma / (1 + gamma);
-  return h * std::sqrt(E11 / (11 * G13) * (3 - 2 * r * r));
-}
+const char* kInterfaces =
+    "{select: [1], model: tiebreak, OPTION: 9, NFLS: 20 MPa, SFLS: 20 MPa, ERATEN: 200 J/m^2,\n"
+    "               ERATES: 400 J/m^2, PARAM: 1, CN: 100 kN/mm^3, CT2CN: 1, precrack: {x: [0, 25]}}";
+
+std::string dcb_scene() { return dcb::dcb_scene(kInterfaces, kEnd); }
 
 TEST(DCB, ComplianceCriticalLoadPropagationAndEnergy) {
-  const auto start = std::chrono::steady_clock::now();
   const config::Scene scene = config::load_scene_from_string(dcb_scene(), "dcb.yaml");
   const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
   ASSERT_EQ(model.interfaces.size(), 1u);
@@ -130,46 +81,13 @@ TEST(DCB, ComplianceCriticalLoadPropagationAndEnergy) {
   // (the pairs at x = a0 are free too, their tributary strip reaches half a segment further).
   const double a_eff = precrack_area / b;
   const double delta_w = williams_delta();
-  const double c_theory = 8 * std::pow(a_eff + delta_w, 3) / (E11 * b * h * h * h);
-  const double p_c = b / (a_eff + delta_w) * std::sqrt(E11 * h * h * h * GIc / 12);
+  const double c_theory = compliance(a_eff);
+  const double p_c = critical_load(a_eff);
   const double delta_c = c_theory * p_c;
-  const auto p_branch = [&](double delta) {
-    return std::sqrt(8 * b * b * std::pow(E11 * h * h * h * GIc / 12, 1.5) / (E11 * h * h * h * delta));
-  };
-
-  double opening = 0, max_ratio_err = 0, min_elastic = 0, min_dissipated = 0;
-  std::vector<double> times, openings, loads;
-  while (solver.state().time < kEnd * (1 - 1e-12)) {
-    const double dt = solver.state().dt_next_half;
-    solver.step();
-    const auto& s = solver.state();
-    const double vz = s.v[3 * std::size_t(tops.nodes[0]) + 2];
-    opening += 2 * vz * dt;
-    times.push_back(s.time);
-    openings.push_back(opening);
-    loads.push_back(std::abs(s.reaction[2]));
-    const double work = solver.balance().external_work();
-    if (work > 0.05 * 0.5 * p_c * delta_c) max_ratio_err = std::max(max_ratio_err, std::abs(solver.energy_ratio() - 1));
-    min_elastic = std::min(min_elastic, solver.balance().value("interface_elastic"));
-    min_dissipated = std::min(min_dissipated, solver.balance().value("interface_dissipated"));
-  }
-  // The reaction at the prescribed nodes carries the arms' vibration (the tip nodes' inertia and the
-  // through-thickness modes): the load is its mean over kWindow centred on each sample, which spans
-  // several periods of those modes and a fraction of the arms' bending period (0.3 ms at a0).
-  constexpr double kWindow = 0.1e-3;
-  std::vector<double> t_s, d_s, p_s;
-  {
-    std::size_t lo = 0, hi = 0;
-    double sum = 0;
-    for (std::size_t i = 0; i < times.size(); ++i) {
-      if (times[i] - kWindow / 2 < 0 || times[i] + kWindow / 2 > times.back()) continue;
-      while (hi < times.size() && times[hi] <= times[i] + kWindow / 2) sum += loads[hi++];
-      while (times[lo] < times[i] - kWindow / 2) sum -= loads[lo++];
-      t_s.push_back(times[i]);
-      d_s.push_back(openings[i]);
-      p_s.push_back(sum / double(hi - lo));
-    }
-  }
+  const Record rec = record_run(solver, model, kEnd, 0.05 * 0.5 * p_c * delta_c);
+  const double max_ratio_err = rec.max_ratio_err, min_elastic = rec.min_elastic, min_dissipated = rec.min_dissipated;
+  const Curve curve = smoothed(rec);
+  const std::vector<double>&d_s = curve.opening, &p_s = curve.load;
   double peak = 0, peak_opening = 0, sxx = 0, sxy = 0;  // least squares delta = C P over 0.2 .. 0.6 P_c
   for (std::size_t i = 0; i < p_s.size(); ++i) {
     if (p_s[i] > 0.2 * p_c && p_s[i] < 0.6 * p_c && peak < 0.6 * p_c) {
@@ -182,7 +100,7 @@ TEST(DCB, ComplianceCriticalLoadPropagationAndEnergy) {
     }
   }
   const double last_p = p_s.back(), last_delta = d_s.back();
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall = rec.wall;
   const double c_fe = sxy / sxx;
   const double area = itf->delaminated_area();
   std::printf("DCB: %zu elements, %ld cycles, wall %.2f s; Delta (Williams) %.3f mm\n", model.num_elements(),
@@ -192,7 +110,7 @@ TEST(DCB, ComplianceCriticalLoadPropagationAndEnergy) {
   std::printf("  peak load %.5g N at opening %.4g mm, LEFM P_c %.5g N, error %+.2f %%\n", peak, peak_opening * 1e3,
               p_c, 100 * (peak / p_c - 1));
   std::printf("  final load %.5g N at opening %.4g mm, propagation branch %.5g N, error %+.2f %%\n", last_p,
-              last_delta * 1e3, p_branch(last_delta), 100 * (last_p / p_branch(last_delta) - 1));
+              last_delta * 1e3, propagation_load(last_delta), 100 * (last_p / propagation_load(last_delta) - 1));
   std::printf("  delaminated %.4g mm^2 (pre-crack %.4g), dissipated %.4g mJ, G_Ic x growth %.4g mJ; max |ratio - 1| %.2e\n",
               area * 1e6, precrack_area * 1e6, solver.balance().value("interface_dissipated") * 1e3,
               GIc * (area - precrack_area) * 1e3, max_ratio_err);
@@ -209,7 +127,7 @@ TEST(DCB, ComplianceCriticalLoadPropagationAndEnergy) {
   EXPECT_NEAR(c_fe / c_theory, 1.0, 0.05);
   EXPECT_NEAR(peak / p_c, 1.0, 0.10);
   EXPECT_GT(area, precrack_area + 5 * b * 1e-3) << "the crack grew by several segments";
-  EXPECT_NEAR(last_p / p_branch(last_delta), 1.0, 0.10);
+  EXPECT_NEAR(last_p / propagation_load(last_delta), 1.0, 0.10);
   EXPECT_LT(max_ratio_err, 0.01);
   EXPECT_GE(min_elastic, 0.0);
   EXPECT_GE(min_dissipated, 0.0);
