@@ -161,15 +161,8 @@ CohesiveElements::CohesiveElements(const TractionLawParams& params, CohesiveElem
     for (int a = 0; a < 4; ++a) corner_area_[kPoints * e + a] = area_of_slot[8 * e + a];
 
   element_force_.assign(24 * ne, 0.0);
-  max_opening_.assign(np, 0.0);
-  damage_.assign(np, 0.0);
-  slip1_.assign(np, 0.0);
-  slip2_.assign(np, 0.0);
-  stick_energy_.assign(np, 0.0);
-  const std::size_t chunks = (ne + kChunk - 1) / kChunk;
-  chunk_elastic_.assign(chunks, 0.0);
-  chunk_dissipated_.assign(chunks, 0.0);
-  chunk_separated_.assign(chunks, 0.0);
+  history_.assign(np);
+  sums_.assign((ne + kChunk - 1) / kChunk);
   set_nodal_mass(nodal_mass);
 }
 
@@ -205,14 +198,10 @@ void CohesiveElements::point_positions(const double* x, double* out) const {
     PointFrame fr;
     double u[3];
     point_kinematics(*quad_, c, g, fr, u);
-    PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
+    PointHistory h = history_.load(p);
     PointResponse r;
     traction_update(law_, u, h, r);
-    max_opening_[p] = h.max_opening;
-    damage_[p] = h.damage;
-    slip1_[p] = h.slip1;
-    slip2_[p] = h.slip2;
-    stick_energy_[p] = h.stick_energy;
+    history_.store(p, h);
     const double area = point_area_[p];
     const double* t = r.traction;
     double traction[3];
@@ -231,7 +220,7 @@ void CohesiveElements::point_positions(const double* x, double* out) const {
 }
 
 void CohesiveElements::apply(const double* x, const double* /*v*/, double* f, double /*dt*/) {
-  const std::size_t ne = num_elements_, chunks = chunk_elastic_.size(), nn = gather_node_.size();
+  const std::size_t ne = num_elements_, chunks = sums_.size(), nn = gather_node_.size();
 #pragma omp parallel if (ne >= 2 * kChunk)
   {
 #pragma omp for schedule(static)
@@ -240,9 +229,7 @@ void CohesiveElements::apply(const double* x, const double* /*v*/, double* f, do
       const std::size_t end = std::min(ne, (ch + 1) * kChunk);
       for (std::size_t e = ch * kChunk; e < end; ++e)
         element_forces(x, e, &element_force_[24 * e], elastic, dissipated, separated);
-      chunk_elastic_[ch] = elastic;
-      chunk_dissipated_[ch] = dissipated;
-      chunk_separated_[ch] = separated;
+      sums_.set(ch, elastic, dissipated, separated);
     }
 #pragma omp for schedule(static)
     for (std::size_t k = 0; k < nn; ++k) {
@@ -252,15 +239,10 @@ void CohesiveElements::apply(const double* x, const double* /*v*/, double* f, do
       for (int i = 0; i < 3; ++i) f[3 * std::size_t(gather_node_[k]) + i] += sum[i];
     }
   }
-  double elastic = 0, dissipated = 0, separated = 0;
-  for (std::size_t ch = 0; ch < chunks; ++ch) {
-    elastic += chunk_elastic_[ch];
-    dissipated += chunk_dissipated_[ch];
-    separated += chunk_separated_[ch];
-  }
-  elastic_energy_ = elastic;
-  dissipated_energy_ += dissipated;
-  separated_area_ = separated;
+  const ChunkSums::Totals total = sums_.total();
+  elastic_energy_ = total.elastic;
+  dissipated_energy_ += total.dissipated;
+  separated_area_ = total.separated;
 }
 
 void CohesiveElements::set_nodal_mass(const double* nodal_mass) {
@@ -287,23 +269,14 @@ void CohesiveElements::sample(const double* x, PairSample* out) const {
       PointFrame fr;
       PairSample& s = out[p];
       point_kinematics(*quad_, c, g, fr, s.opening);
-      PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
-      PointResponse r;
-      traction_update(law_, s.opening, h, r);
-      s.damage = r.damage;
-      s.mixity = r.mixity;
-      for (int i = 0; i < 3; ++i) s.traction[i] = r.traction[i];
+      sample_point(law_, history_.load(p), s);
     }
   }
 }
 
 void CohesiveElements::visit_state(StateVisitor& visitor) {
   StateGroup group(visitor, "cohesive elements");
-  visitor.array("max_opening", max_opening_);
-  visitor.array("damage", damage_);
-  visitor.array("slip_1", slip1_);
-  visitor.array("slip_2", slip2_);
-  visitor.array("stick_energy", stick_energy_);
+  history_.visit_state(visitor);
   visitor.scalar("dissipated_energy", dissipated_energy_);
 }
 

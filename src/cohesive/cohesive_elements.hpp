@@ -24,7 +24,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "cohesive/tiebreak_pairs.hpp"  // PairSample
+#include "cohesive/point_histories.hpp"
+#include "cohesive/point_sample.hpp"
 #include "cohesive/traction_law.hpp"
 #include "core/state_visitor.hpp"
 #include "core/types.hpp"
@@ -70,12 +71,12 @@ class CohesiveElements {
   std::size_t num_points() const { return kPoints * num_elements_; }
   const TractionLaw& law() const { return law_; }
   const std::vector<Index>& nodes() const { return nodes_; }        // (num_elements, 8)
-  const std::vector<double>& damage() const { return damage_; }     // (num_elements, 4)
+  const std::vector<double>& damage() const { return history_.damage(); }  // (num_elements, 4)
   double point_area(std::size_t point) const { return point_area_[point]; }  // m^2, A_g
   double element_area(std::size_t e) const;                                // m^2, reference mid-surface
 
   // Initial history: point p starts separated (a pre-crack).
-  void separate_point(std::size_t point) { damage_[point] = 1.0; }
+  void separate_point(std::size_t point) { history_.separate(point); }
 
   // Positions of the points on the mid-surface of configuration x into out ((num_points, 3)).
   void point_positions(const double* x, double* out) const;
@@ -104,11 +105,10 @@ class CohesiveElements {
   std::vector<Index> gather_slot_;
   std::vector<double> element_force_; // (num_elements, 8, 3) scratch of the last pass
 
-  // History, (num_elements, 4) each: see PointHistory.
-  std::vector<double> max_opening_, damage_, slip1_, slip2_, stick_energy_;
+  PointHistories history_;  // (num_elements, 4)
   double dissipated_energy_ = 0;
 
-  std::vector<double> chunk_elastic_, chunk_dissipated_, chunk_separated_;  // (num_chunks) scratch
+  ChunkSums sums_;  // scratch of the last pass
   double elastic_energy_ = 0;
   double separated_area_ = 0;
   double stable_step_ = 0;

@@ -39,18 +39,11 @@ SegmentTiebreaks::SegmentTiebreaks(const TractionLawParams& params, std::vector<
     opening(x_ref, k, fr, u);
     for (int i = 0; i < 3; ++i) offset_[3 * k + i] = u[i];
   }
-  max_opening_.assign(n, 0.0);
-  damage_.assign(n, 0.0);
-  slip1_.assign(n, 0.0);
-  slip2_.assign(n, 0.0);
-  stick_energy_.assign(n, 0.0);
+  history_.assign(n);
   released_.assign(n, 0);
   held_.assign(n, 0.0);
   force_.assign(3 * n, 0.0);
-  const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  chunk_elastic_.assign(chunks, 0.0);
-  chunk_dissipated_.assign(chunks, 0.0);
-  chunk_separated_.assign(chunks, 0.0);
+  sums_.assign((n + kChunk - 1) / kChunk);
   set_nodal_mass(nodal_mass);
 }
 
@@ -85,7 +78,7 @@ void SegmentTiebreaks::opening(const double* x, std::size_t k, Frame& fr, double
 }
 
 void SegmentTiebreaks::apply(const double* x, double* f) {
-  const std::size_t n = ties_.size(), chunks = chunk_elastic_.size();
+  const std::size_t n = ties_.size(), chunks = sums_.size();
 #pragma omp parallel for schedule(static) if (n >= 2 * kChunk)
   for (std::size_t ch = 0; ch < chunks; ++ch) {
     double elastic = 0, dissipated = 0, separated = 0;
@@ -100,14 +93,10 @@ void SegmentTiebreaks::apply(const double* x, double* f) {
       Frame fr;
       double u[3];
       opening(x, k, fr, u);
-      PointHistory h{max_opening_[k], damage_[k], slip1_[k], slip2_[k], stick_energy_[k]};
+      PointHistory h = history_.load(k);
       PointResponse r;
       traction_update(law_, u, h, r);
-      max_opening_[k] = h.max_opening;
-      damage_[k] = h.damage;
-      slip1_[k] = h.slip1;
-      slip2_[k] = h.slip2;
-      stick_energy_[k] = h.stick_energy;
+      history_.store(k, h);
       const double A = ties_[k].area;
       const double* t = r.traction;
       for (int i = 0; i < 3; ++i) F[i] = A * (t[0] * fr.n[i] + t[1] * fr.t1[i] + t[2] * fr.t2[i]);
@@ -116,9 +105,7 @@ void SegmentTiebreaks::apply(const double* x, double* f) {
       dissipated += A * r.dissipated_increment;
       if (h.damage >= 1) separated += A;
     }
-    chunk_elastic_[ch] = elastic;
-    chunk_dissipated_[ch] = dissipated;
-    chunk_separated_[ch] = separated;
+    sums_.set(ch, elastic, dissipated, separated);
   }
   // Scatter in tie order: neighbouring ties share master nodes.
   for (std::size_t k = 0; k < n; ++k) {
@@ -130,15 +117,10 @@ void SegmentTiebreaks::apply(const double* x, double* f) {
       for (int a = 0; a < 4; ++a) f[3 * std::size_t(t.master[a]) + i] += N[a] * F[i];
     }
   }
-  double elastic = 0, dissipated = 0, separated = 0;
-  for (std::size_t ch = 0; ch < chunks; ++ch) {
-    elastic += chunk_elastic_[ch];
-    dissipated += chunk_dissipated_[ch];
-    separated += chunk_separated_[ch];
-  }
-  elastic_energy_ = elastic;
-  dissipated_energy_ += dissipated;
-  separated_area_ = separated;
+  const ChunkSums::Totals total = sums_.total();
+  elastic_energy_ = total.elastic;
+  dissipated_energy_ += total.dissipated;
+  separated_area_ = total.separated;
 }
 
 void SegmentTiebreaks::release(std::size_t k) {
@@ -149,8 +131,7 @@ void SegmentTiebreaks::release(std::size_t k) {
   dissipated_energy_ += held_[k];
   elastic_energy_ -= held_[k];
   held_[k] = 0;
-  damage_[k] = 1;
-  stick_energy_[k] = 0;
+  history_.release(k);
 }
 
 void SegmentTiebreaks::set_nodal_mass(const double* nodal_mass) {
@@ -170,28 +151,19 @@ void SegmentTiebreaks::sample(const double* x, PairSample* out) const {
     Frame fr;
     PairSample& s = out[k];
     opening(x, k, fr, s.opening);
-    PointHistory h{max_opening_[k], damage_[k], slip1_[k], slip2_[k], stick_energy_[k]};
-    PointResponse r;
-    if (released_[k]) {
+    if (released_[k]) {  // carries nothing: its master is gone
       s.damage = 1;
       s.mixity = 0;
       for (double& c : s.traction) c = 0;
       continue;
     }
-    traction_update(law_, s.opening, h, r);
-    s.damage = r.damage;
-    s.mixity = r.mixity;
-    for (int i = 0; i < 3; ++i) s.traction[i] = r.traction[i];
+    sample_point(law_, history_.load(k), s);
   }
 }
 
 void SegmentTiebreaks::visit_state(StateVisitor& visitor) {
   StateGroup group(visitor, "segment tiebreaks");
-  visitor.array("max_opening", max_opening_);
-  visitor.array("damage", damage_);
-  visitor.array("slip_1", slip1_);
-  visitor.array("slip_2", slip2_);
-  visitor.array("stick_energy", stick_energy_);
+  history_.visit_state(visitor);
   visitor.array("released", released_);
   visitor.array("held_energy", held_);
   visitor.array("force", force_);

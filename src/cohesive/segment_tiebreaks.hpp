@@ -24,7 +24,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "cohesive/tiebreak_pairs.hpp"
+#include "cohesive/point_histories.hpp"
+#include "cohesive/point_sample.hpp"
 #include "cohesive/traction_law.hpp"
 #include "core/state_visitor.hpp"
 #include "core/types.hpp"
@@ -60,7 +61,7 @@ class SegmentTiebreaks {
   std::size_t size() const { return ties_.size(); }
   const SegmentTie& tie(std::size_t k) const { return ties_[k]; }
   const TractionLaw& law() const { return law_; }
-  const std::vector<double>& damage() const { return damage_; }
+  const std::vector<double>& damage() const { return history_.damage(); }
   void sample(const double* x, PairSample* out) const;
 
   void visit_state(StateVisitor& visitor);
@@ -76,12 +77,12 @@ class SegmentTiebreaks {
   std::vector<SegmentTie> ties_;
   std::vector<double> weights_;   // (num_ties, 4) N_k(xi, eta)
   std::vector<double> offset_;    // (num_ties, 3) reference opening in the reference frame
-  std::vector<double> max_opening_, damage_, slip1_, slip2_, stick_energy_;
+  PointHistories history_;        // (num_ties)
   std::vector<char> released_;
   std::vector<double> held_;      // (num_ties) J held by each tie's springs at the last pass
   double dissipated_energy_ = 0;
   std::vector<double> force_;     // (num_ties, 3) scratch: the force on each master point
-  std::vector<double> chunk_elastic_, chunk_dissipated_, chunk_separated_;
+  ChunkSums sums_;                // scratch of the last pass
   double elastic_energy_ = 0, separated_area_ = 0, stable_step_ = 0;
 };
 

@@ -162,15 +162,8 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
     perpendicular(&normals_[3 * p], pairs_[p].t1_ref);
   }
 
-  max_opening_.assign(n, 0.0);
-  damage_.assign(n, 0.0);
-  slip1_.assign(n, 0.0);
-  slip2_.assign(n, 0.0);
-  stick_energy_.assign(n, 0.0);
-  const std::size_t chunks = (n + kChunk - 1) / kChunk;
-  chunk_elastic_.assign(chunks, 0.0);
-  chunk_dissipated_.assign(chunks, 0.0);
-  chunk_separated_.assign(chunks, 0.0);
+  history_.assign(n);
+  sums_.assign((n + kChunk - 1) / kChunk);
   set_nodal_mass(nodal_mass);
 }
 
@@ -203,7 +196,7 @@ void TiebreakPairs::build_face_adjacency(const double* x_ref, bool areas_from_fa
 
 void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, double /*dt*/) {
   const std::size_t n = pairs_.size(), nf = faces_.size() / 4;
-  const std::size_t chunks = chunk_elastic_.size();
+  const std::size_t chunks = sums_.size();
   const bool parallel = nodes_distinct_ && n >= 2 * kChunk;
   const bool refresh = nf && passes_ % std::uint64_t(normal_refresh_interval_) == 0;
   ++passes_;
@@ -223,14 +216,10 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
         const Frame fr = frame(p);
         double u[3];
         local_opening(x, p, fr, u);
-        PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
+        PointHistory h = history_.load(p);
         PointResponse r;
         traction_update(law_, u, h, r);
-        max_opening_[p] = h.max_opening;
-        damage_[p] = h.damage;
-        slip1_[p] = h.slip1;
-        slip2_[p] = h.slip2;
-        stick_energy_[p] = h.stick_energy;
+        history_.store(p, h);
         const auto& c = pairs_[p];
         const double* t = r.traction;
         for (int i = 0; i < 3; ++i) {
@@ -242,20 +231,13 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
         dissipated += c.area * r.dissipated_increment;
         if (h.damage >= 1) separated += c.area;
       }
-      chunk_elastic_[ch] = elastic;
-      chunk_dissipated_[ch] = dissipated;
-      chunk_separated_[ch] = separated;
+      sums_.set(ch, elastic, dissipated, separated);
     }
   }
-  double elastic = 0, dissipated = 0, separated = 0;
-  for (std::size_t ch = 0; ch < chunks; ++ch) {
-    elastic += chunk_elastic_[ch];
-    dissipated += chunk_dissipated_[ch];
-    separated += chunk_separated_[ch];
-  }
-  elastic_energy_ = elastic;
-  dissipated_energy_ += dissipated;
-  separated_area_ = separated;
+  const ChunkSums::Totals total = sums_.total();
+  elastic_energy_ = total.elastic;
+  dissipated_energy_ += total.dissipated;
+  separated_area_ = total.separated;
 }
 
 void TiebreakPairs::set_nodal_mass(const double* nodal_mass) {
@@ -278,22 +260,13 @@ void TiebreakPairs::sample(const double* x, PairSample* out) const {
     const Frame fr = frame(p);
     PairSample& s = out[p];
     local_opening(x, p, fr, s.opening);
-    PointHistory h{max_opening_[p], damage_[p], slip1_[p], slip2_[p], stick_energy_[p]};
-    PointResponse r;
-    traction_update(law_, s.opening, h, r);
-    s.damage = r.damage;
-    s.mixity = r.mixity;
-    for (int i = 0; i < 3; ++i) s.traction[i] = r.traction[i];
+    sample_point(law_, history_.load(p), s);
   }
 }
 
 void TiebreakPairs::visit_state(StateVisitor& visitor) {
   StateGroup group(visitor, "tiebreak pairs");
-  visitor.array("max_opening", max_opening_);
-  visitor.array("damage", damage_);
-  visitor.array("slip_1", slip1_);
-  visitor.array("slip_2", slip2_);
-  visitor.array("stick_energy", stick_energy_);
+  history_.visit_state(visitor);
   visitor.scalar("dissipated_energy", dissipated_energy_);
   visitor.array("normal", normals_);
   visitor.scalar("passes", passes_);

@@ -24,6 +24,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "cohesive/point_histories.hpp"
+#include "cohesive/point_sample.hpp"
 #include "cohesive/traction_law.hpp"
 #include "core/aligned_allocator.hpp"
 #include "core/state_visitor.hpp"
@@ -45,14 +47,6 @@ struct TiebreakPairsSpec {
 // corner is not a lower node of a pair.
 std::vector<Index> pair_faces_from_segments(const std::vector<Index>& lower_nodes,
                                             const std::vector<Index>& lower_segments);
-
-// What an output frame shows of one pair (evaluated without changing the state).
-struct PairSample {
-  double damage = 0;
-  double mixity = 0;                // G_II / G_T
-  double opening[3] = {0, 0, 0};    // m, (normal, shear 1, shear 2)
-  double traction[3] = {0, 0, 0};   // Pa, same frame
-};
 
 class TiebreakPairs {
  public:
@@ -80,8 +74,10 @@ class TiebreakPairs {
 
   std::size_t size() const { return pairs_.size(); }
   const TractionLaw& law() const { return law_; }
-  const std::vector<double>& damage() const { return damage_; }    // (num_pairs)
+  const std::vector<double>& damage() const { return history_.damage(); }  // (num_pairs)
   double area(std::size_t pair) const { return pairs_[pair].area; }
+  // Initial history of a pre-crack: the pair starts separated.
+  void separate_pair(std::size_t pair) { history_.separate(pair); }
 
   // Per-pair output for configuration x into out[0 .. size()), in the frames of the last pass.
   void sample(const double* x, PairSample* out) const;
@@ -118,11 +114,10 @@ class TiebreakPairs {
   std::uint64_t passes_ = 0;               // apply() calls so far (when the normals are refreshed)
   bool nodes_distinct_ = true;
 
-  // History, (num_pairs) each: see PointHistory.
-  std::vector<double> max_opening_, damage_, slip1_, slip2_, stick_energy_;
+  PointHistories history_;  // (num_pairs)
   double dissipated_energy_ = 0;
 
-  std::vector<double> chunk_elastic_, chunk_dissipated_, chunk_separated_;  // (num_chunks) scratch
+  ChunkSums sums_;  // scratch of the last pass
   double elastic_energy_ = 0;
   double separated_area_ = 0;
   double stable_step_ = 0;

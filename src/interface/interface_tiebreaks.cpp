@@ -9,24 +9,6 @@ namespace plyimpact::interface {
 
 namespace {
 
-// Sets the damage of the chosen pairs to 1 through the kernel's named history, so a pre-crack is
-// ordinary run state (written and read back like any other) rather than a special case.
-class SeparatePairs : public StateVisitor {
- public:
-  explicit SeparatePairs(const std::vector<char>& separated) : separated_(separated) {}
-  void enter(std::string_view) override {}
-  void leave() override {}
-  void block(std::string_view name, std::size_t elem_size, std::size_t count, void* data, Resize, void*) override {
-    if (name != "damage" || elem_size != sizeof(double) || count != separated_.size()) return;
-    double* d = static_cast<double*>(data);
-    for (std::size_t p = 0; p < count; ++p)
-      if (separated_[p]) d[p] = 1.0;
-  }
-
- private:
-  const std::vector<char>& separated_;
-};
-
 // Whether X (x, y) lies in the pre-crack region of `spec` (closed, with a round-off margin).
 bool in_precrack(const config::InterfaceLawSpec& spec, const double* X) {
   const double tol = 1e-9 * std::max(spec.precrack_x[1], spec.precrack_y[1]);
@@ -118,8 +100,8 @@ cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const mo
   spec.normals = itf.normal;
   cohesive::TiebreakPairs pairs(itf.tiebreak->law, std::move(spec), model.X.data(), model.mass.data());
   const std::vector<char> separated = precrack_pairs(model, itf);
-  SeparatePairs visitor(separated);
-  pairs.visit_state(visitor);
+  for (std::size_t p = 0; p < separated.size(); ++p)
+    if (separated[p]) pairs.separate_pair(p);
   return pairs;
 }
 
@@ -180,12 +162,13 @@ InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_elem
     if (is_cohesive(itf)) {
       cohesive_.push_back(make_interface_cohesive(model, itf));
       cohesive_ids_.push_back(itf.id);
+      layouts_.push_back(cohesive_layout(model, itf, cohesive_.back()));
       columns_.emplace_back(true, cohesive_.size() - 1);
       stable_step_ = std::min(stable_step_, cohesive_.back().stable_step());
     } else {
       pairs_.push_back(make_interface_pairs(model, itf));
       ids_.push_back(itf.id);
-      layouts_.push_back(pair_layout(itf));
+      layouts_.push_back(pair_layout(model, itf));
       columns_.emplace_back(false, pairs_.size() - 1);
       stable_step_ = std::min(stable_step_, pairs_.back().stable_step());
     }
@@ -244,6 +227,17 @@ void InterfaceTiebreaks::history_values(std::vector<double>& row) const {
   row.push_back(delaminated_area());
   for (const auto& [is_cohesive_column, k] : columns_)
     row.push_back(is_cohesive_column ? cohesive_[k].separated_area() : pairs_[k].separated_area());
+}
+
+void InterfaceTiebreaks::sample(std::size_t i, const double* x, cohesive::PairSample* out) const {
+  const auto& [is_cohesive_column, k] = columns_[i];
+  if (is_cohesive_column) cohesive_[k].sample(x, out);
+  else pairs_[k].sample(x, out);
+}
+
+const std::vector<double>& InterfaceTiebreaks::damage(std::size_t i) const {
+  const auto& [is_cohesive_column, k] = columns_[i];
+  return is_cohesive_column ? cohesive_[k].damage() : pairs_[k].damage();
 }
 
 void InterfaceTiebreaks::visit_state(StateVisitor& visitor) {

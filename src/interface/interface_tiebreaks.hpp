@@ -7,10 +7,10 @@
 // as it does the contact springs). A pre-crack is part of the initial history: the pairs whose
 // reference position lies in the region start with damage 1 (separated: contact only).
 // History: the delaminated (damage 1) area in total and per interface, pre-crack included.
-// Outputs: an InterfaceSampleSource whose sample points are the pairs (interface_output.hpp); the
-// cohesive interfaces are not in the outputs yet.
 // An interface with `model: cohesive` gets *MAT_138 cohesive elements (cohesive::CohesiveElements,
 // one per interface segment) instead of pairs; they report under the same energies and columns.
+// Outputs: an InterfaceSampleSource (interface_output.hpp) over all interfaces in id order, whose
+// sample points are the pairs or the elements' integration points.
 #pragma once
 
 #include <string>
@@ -49,14 +49,15 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
   const std::vector<cohesive::CohesiveElements>& cohesive() const { return cohesive_; }
   const std::vector<int>& cohesive_ids() const { return cohesive_ids_; }  // 1-based number of each cohesive_ entry
 
-  std::size_t num_interfaces() const override { return pairs_.size(); }
+  std::size_t num_interfaces() const override { return layouts_.size(); }
   const InterfaceLayout& layout(std::size_t i) const override { return layouts_[i]; }
-  void sample(std::size_t i, const double* x, cohesive::PairSample* out) const override { pairs_[i].sample(x, out); }
+  void sample(std::size_t i, const double* x, cohesive::PairSample* out) const override;
+  const std::vector<double>& damage(std::size_t i) const override;
 
  private:
   std::vector<cohesive::TiebreakPairs> pairs_;
   std::vector<int> ids_;
-  std::vector<InterfaceLayout> layouts_;  // (pairs_.size()) for the outputs
+  std::vector<InterfaceLayout> layouts_;  // (columns_.size()) for the outputs, in id order
   std::vector<cohesive::CohesiveElements> cohesive_;
   std::vector<int> cohesive_ids_;
   std::vector<std::pair<bool, std::size_t>> columns_;  // per interface in id order: (cohesive, index)

@@ -48,6 +48,7 @@ ContactTying tie_contact(const model::Model& model, const model::Contact& contac
   TyingSurfaces s{slave.quads, slave.thickness, master.quads, master.thickness};
   ContactTying out;
   out.result = tie_slave_nodes(s, model.X.data());
+  out.slave_faces = slave.quads;
   for (Index face : out.result.tie_master_face) {
     out.master_block.push_back(master.block[std::size_t(face)]);
     out.master_element.push_back(master.element[std::size_t(face)]);
@@ -69,12 +70,17 @@ model::Subsystem SurfaceTiebreaks::describe(const model::Model& model) {
 
 SurfaceTiebreaks::SurfaceTiebreaks(const model::Model& model, double dt_element) {
   stable_step_ = std::numeric_limits<double>::infinity();
+  int id = 0;  // outputs: numbered after the laminate's interfaces
+  for (const auto& itf : model.interfaces) id = std::max(id, itf.id);
   for (const auto& c : model.tiebreak_contacts) {
     ContactTying tying = tie_contact(model, c);
     if (!tying.result.untied.empty() || tying.result.ties.empty())
       warnings_.push_back("tiebreak contact '" + c.spec.name + "': " + tying_summary(tying.result, model.X.data()));
     names_.push_back(c.spec.name);
     ties_.emplace_back(*c.spec.tiebreak, tying.result.ties, model.X.data(), model.mass.data());
+    std::vector<int> blocks = c.a.blocks;
+    blocks.insert(blocks.end(), c.b.blocks.begin(), c.b.blocks.end());
+    layouts_.push_back(tie_layout(model, ++id, c.spec.name, ties_.back(), tying.slave_faces, blocks));
     tying_.push_back(std::move(tying));
     stable_step_ = std::min(stable_step_, ties_.back().stable_step());
   }

@@ -5,13 +5,15 @@
 // Energies: elastic and dissipated, in the total and shown apart; stable step: the stiffest tie;
 // erosion: a tie whose master element is deleted lets go; history: the separated (delaminated) area
 // of each contact; `check` and the run report how many slave nodes were tied and why the others
-// were not.
+// were not. Outputs: an InterfaceSampleSource (interface_output.hpp) per contact, its sample points the
+// ties.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "cohesive/segment_tiebreaks.hpp"
+#include "interface/interface_output.hpp"
 #include "interface/segment_tying.hpp"
 #include "solver/force_contributor.hpp"
 
@@ -22,10 +24,11 @@ struct ContactTying {
   TyingResult result;
   std::vector<int> master_block;       // (num_ties) block of the master segment's element
   std::vector<Index> master_element;   // (num_ties) element index within that block
+  std::vector<Index> slave_faces;      // (num, 4) the slave side's exterior faces (node indices)
 };
 ContactTying tie_contact(const model::Model& model, const model::Contact& contact);
 
-class SurfaceTiebreaks : public solver::ForceContributor {
+class SurfaceTiebreaks : public solver::ForceContributor, public InterfaceSampleSource {
  public:
   static model::Subsystem describe(const model::Model& model);
   SurfaceTiebreaks(const model::Model& model, double dt_element);
@@ -46,10 +49,16 @@ class SurfaceTiebreaks : public solver::ForceContributor {
 
   const std::vector<cohesive::SegmentTiebreaks>& contacts() const { return ties_; }
 
+  std::size_t num_interfaces() const override { return layouts_.size(); }
+  const InterfaceLayout& layout(std::size_t i) const override { return layouts_[i]; }
+  void sample(std::size_t i, const double* x, cohesive::PairSample* out) const override { ties_[i].sample(x, out); }
+  const std::vector<double>& damage(std::size_t i) const override { return ties_[i].damage(); }
+
  private:
   std::vector<std::string> names_;
   std::vector<cohesive::SegmentTiebreaks> ties_;
   std::vector<ContactTying> tying_;
+  std::vector<InterfaceLayout> layouts_;  // (ties_.size()) for the outputs
   std::vector<std::string> warnings_;
   double stable_step_ = 0;
 };

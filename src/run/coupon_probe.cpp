@@ -5,7 +5,6 @@
 #include <limits>
 
 #include "core/error.hpp"
-#include "interface/interface_tiebreaks.hpp"
 
 namespace plyimpact::run {
 
@@ -42,13 +41,28 @@ CouponProbe::CouponProbe(const model::Model& model) : model_(model) {
   const auto itf = std::find_if(model.interfaces.begin(), model.interfaces.end(),
                                 [&](const model::Interface& i) { return i.id == c.interface; });
   if (itf == model.interfaces.end() || !itf->tiebreak)
-    throw RunError(msg() << "coupon: interface " << c.interface << " has no tiebreak pairs in the model");
-  for (Index n : itf->lower_nodes) pair_x_.push_back(model.X[3 * std::size_t(n)]);
-  // Rows of pairs: distinct x within a tolerance far below any segment length.
-  rows_ = pair_x_;
-  std::sort(rows_.begin(), rows_.end());
-  const double tol = 1e-9 * std::max(1.0, std::abs(rows_.empty() ? 1.0 : rows_.back()));
-  rows_.erase(std::unique(rows_.begin(), rows_.end(), [&](double a, double b) { return b - a < tol; }), rows_.end());
+    throw RunError(msg() << "coupon: interface " << c.interface << " has no tiebreak pairs or cohesive elements in the model");
+}
+
+const CouponProbe::Found& CouponProbe::find(const solver::Solver& solver) const {
+  if (found_.source) return found_;
+  for (const auto& c : solver.contributors()) {
+    const auto* source = dynamic_cast<const interface::InterfaceSampleSource*>(c.get());
+    for (std::size_t i = 0; source && i < source->num_interfaces(); ++i) {
+      const interface::InterfaceLayout& l = source->layout(i);
+      if (l.id != interface_ || !l.contact.empty()) continue;
+      found_.source = source;
+      found_.index = i;
+      // Rows of points: distinct x within a tolerance far below any segment length.
+      auto& rows = found_.rows;
+      for (std::size_t p = 0; p < l.size(); ++p) rows.push_back(l.reference[3 * p]);
+      std::sort(rows.begin(), rows.end());
+      const double tol = 1e-9 * std::max(1.0, std::abs(rows.empty() ? 1.0 : rows.back()));
+      rows.erase(std::unique(rows.begin(), rows.end(), [&](double a, double b) { return b - a < tol; }), rows.end());
+      return found_;
+    }
+  }
+  return found_;
 }
 
 double CouponProbe::load(const solver::Solver& solver) const {
@@ -60,25 +74,23 @@ double CouponProbe::opening(const solver::Solver& solver) const {
   return mean_displacement(upper_, s, model_.X, axis_) - mean_displacement(lower_, s, model_.X, axis_);
 }
 
-// The furthest separated row, then midway to the next row: the separated pair's tributary strip
-// is traction-free up to there (its neighbour ahead still carries the bond).
+// The furthest separated row, then midway to the next row: the separated point's tributary strip
+// is traction-free up to there (its neighbour ahead still carries the bond). For pairs and corner
+// points the rows are the nodes'; for 2 x 2 Gauss points midway between the two rows of a segment is
+// its mid-line and midway between rows of neighbouring segments is their common node (a uniform mesh),
+// which are the bounds of each point's quadrant.
 double CouponProbe::crack_length(const solver::Solver& solver) const {
-  for (const auto& c : solver.contributors()) {
-    const auto* itf = dynamic_cast<const interface::InterfaceTiebreaks*>(c.get());
-    if (!itf) continue;
-    for (std::size_t j = 0; j < itf->interface_ids().size(); ++j) {
-      if (itf->interface_ids()[j] != interface_) continue;
-      const auto& damage = itf->pairs()[j].damage();
-      double front = -std::numeric_limits<double>::infinity();
-      for (std::size_t p = 0; p < damage.size(); ++p)
-        if (damage[p] >= 1) front = std::max(front, pair_x_[p]);
-      if (!std::isfinite(front)) return 0.0;
-      const auto next = std::upper_bound(rows_.begin(), rows_.end(), front + 1e-9 * std::max(1.0, std::abs(front)));
-      if (next != rows_.end()) front = 0.5 * (front + *next);
-      return front - origin_;
-    }
-  }
-  return 0.0;
+  const Found& f = find(solver);
+  if (!f.source) return 0.0;
+  const interface::InterfaceLayout& l = f.source->layout(f.index);
+  const std::vector<double>& damage = f.source->damage(f.index);
+  double front = -std::numeric_limits<double>::infinity();
+  for (std::size_t p = 0; p < damage.size(); ++p)
+    if (damage[p] >= 1) front = std::max(front, l.reference[3 * p]);
+  if (!std::isfinite(front)) return 0.0;
+  const auto next = std::upper_bound(f.rows.begin(), f.rows.end(), front + 1e-9 * std::max(1.0, std::abs(front)));
+  if (next != f.rows.end()) front = 0.5 * (front + *next);
+  return front - origin_;
 }
 
 void CouponProbe::values(const solver::Solver& solver, std::vector<double>& row) const {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "interface/interface_output.hpp"
 #include "run/history_writer.hpp"
 
 namespace plyimpact::run {
@@ -33,8 +34,15 @@ class CouponProbe : public HistoryColumns {
   std::vector<Index> upper_, lower_;
   int interface_ = 0;       // 1-based interface number
   double origin_ = 0;       // m, x of the load line
-  std::vector<double> pair_x_;  // (num_pairs) reference x of each pair
-  std::vector<double> rows_;    // sorted distinct x of the pair rows
+  // The interface's outputs, found among the solver's contributors at the first call, and the
+  // sorted distinct reference x of its rows of sample points.
+  struct Found {
+    const interface::InterfaceSampleSource* source = nullptr;
+    std::size_t index = 0;
+    std::vector<double> rows;
+  };
+  const Found& find(const solver::Solver& solver) const;
+  mutable Found found_;
 };
 
 }  // namespace plyimpact::run

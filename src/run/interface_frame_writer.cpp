@@ -17,13 +17,13 @@ const char* const kSubdir = "interfaces";
 
 output::QuadSurface make_surface(const interface::InterfaceLayout& l) {
   output::QuadSurface s;
-  const std::size_t n = l.size();
+  const std::size_t n = l.num_vertices();
   s.points.assign(3 * n, 0.0);
   s.quads.assign(l.quads.begin(), l.quads.end());
   for (const char* name : {"damage", "mode_mixity", "opening_normal", "opening_shear", "traction_normal", "traction_shear"})
     s.point_fields.push_back({name, 1, std::vector<double>(n, 0.0), {}});
   s.point_int_fields.push_back({"delaminated", std::vector<std::int32_t>(n, 0)});
-  s.units = {{"coordinates", "m (current mid-surface of the pairs)"},
+  s.units = {{"coordinates", "m (current mid-surface of the interface)"},
              {"damage", "- (0 intact .. 1 separated)"},
              {"mode_mixity", "- (G_II / G_T: 0 mode I, 1 shear)"},
              {"opening_normal", "m"},
@@ -72,7 +72,10 @@ void InterfaceFrameWriter::find_blocks(const solver::Solver& solver) {
     const auto* source = dynamic_cast<const interface::InterfaceSampleSource*>(c.get());
     if (!source) continue;
     for (std::size_t i = 0; i < source->num_interfaces(); ++i) {
-      Block b{source, i, make_surface(source->layout(i)), std::vector<cohesive::PairSample>(source->layout(i).size())};
+      const interface::InterfaceLayout& l = source->layout(i);
+      Block b{source, i, make_surface(l), std::vector<cohesive::PairSample>(l.size()),
+              std::vector<double>(3 * l.num_vertices())};
+      l.vertex_positions(solver.model().X.data(), b.reference.data());
       entries_.push_back({b.layout().label(), {}});
       blocks_.push_back(std::move(b));
     }
@@ -97,18 +100,16 @@ void InterfaceFrameWriter::fill(Block& b, const solver::Solver& solver) {
   s.cycle = solver.state().cycle;
   auto& f = s.point_fields;
   auto& delaminated = s.point_int_fields[0].values;
-  for (std::size_t p = 0; p < l.size(); ++p) {
-    const double* xl = &x[3 * std::size_t(l.lower_nodes[p])];
-    const double* xu = &x[3 * std::size_t(l.upper_nodes[p])];
-    for (int d = 0; d < 3; ++d) s.points[3 * p + d] = 0.5 * (xl[d] + xu[d]);
-    const cohesive::PairSample& q = b.samples[p];
-    f[0].values[p] = q.damage;
-    f[1].values[p] = q.mixity;
-    f[2].values[p] = q.opening[0];
-    f[3].values[p] = std::hypot(q.opening[1], q.opening[2]);
-    f[4].values[p] = q.traction[0];
-    f[5].values[p] = std::hypot(q.traction[1], q.traction[2]);
-    delaminated[p] = q.damage >= 1 ? 1 : 0;
+  l.vertex_positions(x, s.points.data());
+  for (std::size_t v = 0; v < l.num_vertices(); ++v) {
+    const cohesive::PairSample& q = b.samples[std::size_t(l.vertex_point[v])];
+    f[0].values[v] = q.damage;
+    f[1].values[v] = q.mixity;
+    f[2].values[v] = q.opening[0];
+    f[3].values[v] = std::hypot(q.opening[1], q.opening[2]);
+    f[4].values[v] = q.traction[0];
+    f[5].values[v] = std::hypot(q.traction[1], q.traction[2]);
+    delaminated[v] = q.damage >= 1 ? 1 : 0;
   }
 }
 
@@ -129,24 +130,24 @@ void InterfaceFrameWriter::write_frame(const solver::Solver& solver) {
 }
 
 void InterfaceFrameWriter::write_cscan(const solver::Solver& solver, RunReport& report) {
-  const model::Model& model = solver.model();
   std::vector<output::CscanLayer> layers;
   DelaminationReport d;
   double top = -INFINITY, deepest = 0;
   for (Block& b : blocks_) {
     fill(b, solver);
     const interface::InterfaceLayout& l = b.layout();
-    output::CscanLayer layer{l.id, l.depth, std::vector<double>(2 * l.size()), b.surface.quads,
-                             std::vector<char>(l.size())};
-    double area = 0;
-    for (std::size_t p = 0; p < l.size(); ++p) {
-      const double* X = &model.X[3 * std::size_t(l.lower_nodes[p])];
-      layer.xy[2 * p] = X[0];
-      layer.xy[2 * p + 1] = X[1];
-      layer.delaminated[p] = b.samples[p].damage >= 1;
-      if (layer.delaminated[p]) area += l.area[p];
+    const std::size_t nv = l.num_vertices();
+    output::CscanLayer layer{l.id, l.depth, std::vector<double>(2 * nv), b.surface.quads, std::vector<char>(nv)};
+    for (std::size_t v = 0; v < nv; ++v) {
+      const double* X = &b.reference[3 * v];
+      layer.xy[2 * v] = X[0];
+      layer.xy[2 * v + 1] = X[1];
+      layer.delaminated[v] = b.samples[std::size_t(l.vertex_point[v])].damage >= 1;
       top = std::max(top, X[2] + l.depth);
     }
+    double area = 0;
+    for (std::size_t p = 0; p < l.size(); ++p)
+      if (b.samples[p].damage >= 1) area += l.area[p];
     deepest = std::max(deepest, l.depth);
     d.interfaces.push_back({l.id, l.label(), l.depth, area});
     d.total_area += area;

@@ -1,9 +1,11 @@
-// Delamination outputs, for every contributor that is an interface::InterfaceSampleSource:
+// Delamination outputs, for every contributor that is an interface::InterfaceSampleSource (the
+// laminate's tiebreak pairs and cohesive elements, the tiebreak contacts' ties):
 //   interfaces.pvd            the series, at the ply frames' times (t = 0, every frame interval, the end)
 //   interfaces/interfaces_NNNN.vtm        one block per interface, named "interface_3 (plies 3/4, 45/-45)"
-//   interfaces/interfaces_NNNN_III.vtu    its quads on the current mid-surface with point data damage,
-//                             mode_mixity, opening_normal, opening_shear (m), traction_normal,
-//                             traction_shear (Pa) and delaminated (0/1)
+//   interfaces/interfaces_NNNN_III.vtu    its display quads (interface_output.hpp) on the current
+//                             mid-surface with point data damage, mode_mixity, opening_normal,
+//                             opening_shear (m), traction_normal, traction_shear (Pa) and
+//                             delaminated (0/1), each vertex showing its sample point
 //   cscan.vtu, cscan.png      the projected delamination map (output/cscan.hpp) at the stop, also
 //                             an early one
 // and the delaminated areas (per interface, total, projected) in the report for summary.json.
@@ -39,7 +41,8 @@ class InterfaceFrameWriter : public RunObserver {
     const interface::InterfaceSampleSource* source = nullptr;
     std::size_t index = 0;
     output::QuadSurface surface;
-    std::vector<cohesive::PairSample> samples;
+    std::vector<cohesive::PairSample> samples;  // (num_points)
+    std::vector<double> reference;              // (num_vertices, 3) m, vertex positions at the start
     const interface::InterfaceLayout& layout() const { return source->layout(index); }
   };
 
