@@ -1,9 +1,9 @@
 #include "hourglass/assumed_strain.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 #include "element/hex8.hpp"
+#include "hourglass/element_elasticity.hpp"
 
 namespace plyimpact::hourglass {
 
@@ -16,17 +16,8 @@ struct Compliance {
   double invG[3] = {};
 };
 
-Compliance isotropic_compliance(double lambda, double mu) {
-  const double E = mu * (3 * lambda + 2 * mu) / (lambda + mu), nu = lambda / (2 * (lambda + mu));
-  Compliance c;
-  for (int a = 0; a < 3; ++a)
-    for (int b = 0; b < 3; ++b) c.S[a][b] = a == b ? 1 / E : -nu / E;
-  for (double& g : c.invG) g = 1 / mu;
-  return c;
-}
-
-// From a stiffness in material axes (orthotropic: no normal-shear coupling): invert the normal
-// 3x3 block; the shear moduli are the diagonal shear entries.
+// From a stiffness in material axes (orthotropic or isotropic: no normal-shear coupling): invert
+// the normal 3x3 block; the shear moduli are the diagonal shear entries.
 Compliance orthotropic_compliance(const material::Stiffness6& C) {
   const double m[9] = {C[0], C[1], C[2], C[6], C[7], C[8], C[12], C[13], C[14]};
   double inv[9];
@@ -65,44 +56,11 @@ double inverse_shear(const Compliance& c, const double n[3], const double m[3]) 
 }  // namespace
 
 std::vector<double> assumed_strain_moduli(const model::Model& model, const model::ElementBlock& block) {
-  const model::Material& mat = model.materials[block.material];
-  Compliance comp;
-  switch (mat.kind) {
-    case model::MaterialKind::IsotropicElastic: comp = isotropic_compliance(mat.iso.lambda, mat.iso.mu); break;
-    case model::MaterialKind::Plastic: comp = isotropic_compliance(mat.plastic.lambda, mat.plastic.shear); break;
-    case model::MaterialKind::OrthotropicElastic: comp = orthotropic_compliance(mat.c_material); break;
-    case model::MaterialKind::CompositeDamage: comp = orthotropic_compliance(mat.composite.C); break;
-    case model::MaterialKind::JohnsonCook:
-      comp = isotropic_compliance(mat.bulk_modulus - 2 * mat.johnson_cook.shear / 3, mat.johnson_cook.shear);
-      break;
-    default: throw std::logic_error("IHQ 6: material '" + mat.name + "' has no elastic constants");
-  }
+  const Compliance comp = orthotropic_compliance(stiffness_in_material_axes(model.materials[block.material]));
   std::vector<double> out(6 * block.size());
   for (std::size_t e = 0; e < block.size(); ++e) {
-    double J[9][1] = {};
-    for (int k = 0; k < 8; ++k) {
-      const double* X = &model.X[3 * std::size_t(block.conn[8 * e + k])];
-      for (int i = 0; i < 3; ++i) {
-        J[3 * i][0] += 0.125 * X[i] * element::kXi[k];
-        J[3 * i + 1][0] += 0.125 * X[i] * element::kEta[k];
-        J[3 * i + 2][0] += 0.125 * X[i] * element::kZeta[k];
-      }
-    }
-    double Ef[9][1], ha[1], hb[1], hc[1];
-    element_frame(J, 0, Ef, ha, hb, hc);
-    double F[9];
-    for (int i = 0; i < 9; ++i) F[i] = Ef[i][0];
-    // Element axes in material axes: n_a = (material axis a) . e_i; identity axes when isotropic.
     double n[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int a = 0; a < 3; ++a) {
-        if (mat.has_axes()) {
-          const auto& Q = model.orientations[block.orientation[e]].axes;
-          n[i][a] = Q[3 * a] * F[3 * i] + Q[3 * a + 1] * F[3 * i + 1] + Q[3 * a + 2] * F[3 * i + 2];
-        } else {
-          n[i][a] = F[3 * i + a];
-        }
-      }
+    element_axes_in_material_axes(model, block, e, n);
     double* m = &out[6 * e];
     for (int i = 0; i < 3; ++i) m[i] = 1 / inverse_young(comp, n[i]);
     m[3] = 1 / inverse_shear(comp, n[0], n[1]);

@@ -1,11 +1,15 @@
-// The hourglass-energy warning's rule. The hourglass energy is compared with the internal energy,
-// as in LS-DYNA practice (HG below ~10 % of IE), but on a denominator that cannot be ~0: the
-// larger of the peak internal energy so far and a floor of kFloor (1 %) of the reference energy
-// (initial total energy + external work, the energy ratio's reference). At first contact the
-// internal energy is round-off (1e-37 J) and a plain ratio reads millions of per cent; with the
-// floor, hourglass energy that is a negligible part of the run cannot raise the warning, while
-// one that reaches the stated share of the internal energy (once that is a real part of the run)
-// or of 1 % of the run's energy does.
+// The hourglass check of a run: the largest share of the internal energy held in hourglass modes
+// over the whole run, and a pass/fail against the limit (control.hourglass_warn_ratio, 10 % by
+// default: the usual acceptance in LS-DYNA practice, hourglass energy below about a tenth of the
+// internal energy at every time). The share at time t is
+//   hourglass(t) / max(internal(t), kFloor x reference(t)),
+// reference = initial total energy + external work (the energy ratio's reference): the internal
+// energy of the same time, as the rule states, on a denominator that cannot be ~0. At first
+// contact the internal energy is round-off (1e-37 J) and a plain ratio reads millions of per cent;
+// with the floor (1 % of the run's energy), hourglass energy that is a negligible part of the run
+// cannot fail the check, while one that reaches the limit's share of the internal energy (once
+// that is a real part of the run) or of 1 % of the run's energy does. Sampled with the history
+// rows, so the maximum is over those samples.
 #pragma once
 
 #include <string>
@@ -13,6 +17,13 @@
 #include "core/state_visitor.hpp"
 
 namespace plyimpact::run {
+
+// The check's result for summary.json: the largest share, when, what it was made of, the limit.
+struct HourglassVerdict {
+  double max_ratio = 0, time = 0, hourglass = 0, denominator = 0, limit = 0;
+  bool floor_governs = false;  // the denominator at the maximum was the floor, not the internal energy
+  bool passed = true;          // max_ratio <= limit
+};
 
 class HourglassWatch {
  public:
@@ -25,14 +36,15 @@ class HourglassWatch {
 
   bool exceeded() const { return max_ratio_ > warn_ratio_; }
   double max_ratio() const { return max_ratio_; }
+  HourglassVerdict verdict() const;
   // The warning text (empty when not exceeded): the ratio, when, and the rule.
   std::string warning() const;
-  // The extremes so far (run state: a continued run warns as the uninterrupted one).
+  // The extremes so far (run state: a continued run checks as the uninterrupted one).
   void visit_state(StateVisitor& visitor);
 
  private:
   double warn_ratio_;
-  double peak_internal_ = 0, max_ratio_ = 0;
+  double max_ratio_ = 0;
   double time_ = 0, hourglass_ = 0, denominator_ = 0;  // at the largest ratio
   bool floor_governs_ = false;
 };

@@ -39,6 +39,7 @@ void HourglassCheck::after_cycle(const solver::Solver& solver) {
 
 void HourglassCheck::stop(const solver::Solver* solver, RunReport& report) {
   (void)solver;
+  report.hourglass = watch_.verdict();
   if (watch_.exceeded()) report.warnings.push_back(watch_.warning());
 }
 

@@ -1,6 +1,7 @@
 // Checks that watch a run and leave a warning in the report (and so in summary.json):
-//   HourglassCheck          hourglass energy against the peak internal energy, on a denominator
-//                           that cannot be ~0 (run/hourglass_watch); sampled with the history rows.
+//   HourglassCheck          hourglass energy against the internal energy at every history sample, on
+//                           a denominator that cannot be ~0 (run/hourglass_watch): the maximum share
+//                           and pass/fail in summary.json, a warning when it fails.
 //   ContactEnergyCheck      energy a contact created: the work its forces did on the bodies beyond
 //                           what they did against it (run/contact_energy_watch), every cycle.
 //   ContactPenetrationCheck nodes a contact released while still behind the face they were in

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/state_visitor.hpp"
+#include "run/hourglass_watch.hpp"
 #include "solver/solver.hpp"
 
 namespace plyimpact::run {
@@ -49,6 +50,7 @@ struct RunReport {
   std::filesystem::path pvd, history, summary, dump;
   std::filesystem::path interfaces_pvd, cscan_vtu, cscan_png;  // empty when not written
   std::optional<DelaminationReport> delamination;               // scenes with delaminating interfaces
+  std::optional<HourglassVerdict> hourglass;                    // the hourglass check (HourglassCheck)
 };
 
 class RunObserver {

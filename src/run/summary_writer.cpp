@@ -113,6 +113,18 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     j["erosion"] = erosion;
   }
   if (report.delamination) j["delamination"] = delamination_json(*report.delamination);
+  if (report.hourglass) {
+    const HourglassVerdict& h = *report.hourglass;
+    output::Json hg = output::Json::object();
+    hg["max_ratio"] = h.max_ratio;  // hourglass / max(internal, 1 % of the reference), over the run
+    hg["time_of_max"] = h.time;
+    hg["hourglass_energy_at_max"] = h.hourglass;
+    hg["denominator_at_max"] = h.denominator;
+    hg["floor_governs"] = h.floor_governs;
+    hg["limit"] = h.limit;
+    hg["passed"] = h.passed;
+    j["hourglass_check"] = hg;
+  }
   j["files"] = output::Json::object();
   j["files"]["pvd"] = report.pvd.filename().string();
   j["files"]["history"] = report.history.filename().string();

@@ -29,7 +29,7 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
                double dt, ChunkResult& r) {
   using HG = hourglass::Traits<IHQ>;
   const model::Material& mat = model.materials[blk.material];
-  const double rho0 = mat.density, c = mat.wave_speed, rho_c2 = mat.wave_modulus;
+  const double rho0 = mat.density, c = mat.wave_speed;
   const double qm = blk.qm, q1 = blk.q1, q2 = blk.q2;
   const double erode_tsmin = model.control.erode_tsmin;
 
@@ -117,7 +117,9 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     for (int l = 0; l < kLanes; ++l)
       for (int i = 0; i < 12; ++i) Qs[i][l] = st.hourglass[12 * std::size_t(elem[l]) + i];
     if constexpr (HG::kStiffness) {
-      hourglass::stiffness_forces_lanes(qm, rho_c2, b, V, R, g, Qs, dt, Qh, dHG);
+      alignas(64) double Mh[kLanes];
+      for (int l = 0; l < kLanes; ++l) Mh[l] = st.hourglass_moduli[elem[l]];
+      hourglass::stiffness_forces_lanes(qm, Mh, b, V, R, g, Qs, dt, Qh, dHG);
     } else if constexpr (HG::kAssumedStrain) {
       alignas(64) double Hm[6][kLanes];
       for (int l = 0; l < kLanes; ++l)

@@ -62,7 +62,7 @@ Solver::Solver(const model::Model& model) : model_(model) {
     auto& st = state_.blocks[b];
     st.stress.assign(6 * blk.size() * blk.points(), 0.0);
     if (blk.hourglass() != model::HourglassKind::None) st.hourglass.assign(12 * blk.size(), 0.0);
-    if (blk.elform == 1 && blk.ihq == 6) st.hourglass_moduli = assumed_strain_moduli(model, blk);
+    st.hourglass_moduli = hourglass_moduli(model, blk);
     st.bulk_q.assign(blk.size(), 0.0);
     st.step_q.assign(blk.size(), 0.0);
     st.internal_energy.assign(blk.size(), 0.0);

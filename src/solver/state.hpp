@@ -19,7 +19,8 @@ struct BlockState {
   // accumulated in the co-rotational element frame (IHQ 6; element axes i) or last viscous (IHQ 1-3);
   // the viscous ones are kept so their work is booked with the trapezoid rule.
   std::vector<double> hourglass;
-  // (num_elements, 6) IHQ 6 moduli E_x', E_y', E_z', G_x'y', G_y'z', G_z'x' (solver/assumed_strain_hourglass).
+  // Hourglass moduli (solver/assumed_strain_hourglass): (num_elements) IHQ 4/5, (num_elements, 6) IHQ 6
+  // E_x', E_y', E_z', G_x'y', G_y'z', G_z'x'; empty otherwise.
   std::vector<double> hourglass_moduli;
   std::vector<double> bulk_q;            // (num_elements) last bulk-viscosity pressure q, Pa (trapezoid work)
   std::vector<double> step_q;            // (num_elements) Q held for the stable step, m/s (element_update step_q)

@@ -49,14 +49,15 @@ TEST(Threads, OneAndTwoThreadsAreBitIdentical) {
 // low) through eroding penalty contact: the contact forces, the erosion and the surface rebuild it
 // triggers, and the rigid body all run on what the parallel element pass produced. The run must
 // really erode elements and move the body, or it would not test their determinism.
-TEST(Threads, ImpactWithContactErosionAndRigidBodyIsBitIdentical) {
+// IHQ 4 and IHQ 6 (the default scene's form): both accumulate hourglass forces per element.
+void impact_is_bit_identical(int ihq) {
   const std::string yaml =
       "units: SI\ncontrol: {termination_time: 1}\nmaterials:\n"
       "  ply: {card: MAT_054, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.019, PRCA: 0.019, PRCB: 0.53,"
       " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0], XT: 2.0e9, XC: 1.2e9,"
       " YT: 50e6, YC: 200e6, SC: 70e6, DFAILT: 0.004, DFAILC: -0.004, DFAILM: 0.004, DFAILS: 0.004}\n"
       "  rig: {card: MAT_020, RO: 7850, E: 210e9, PR: 0.3}\n"
-      "sections:\n  s: {ELFORM: 1, IHQ: 4}\n"
+      "sections:\n  s: {ELFORM: 1, IHQ: " + std::to_string(ihq) + "}\n"
       "parts:\n  plate: {material: ply, section: s}\n  block: {material: rig, section: s}\n"
       "mesh:\n  merge_nodes: false\n  boxes:\n"
       "    - {part: plate, origin: [-0.016, -0.016, -0.002], size: [0.032, 0.032, 0.002], elements: [64, 64, 2]}\n"
@@ -90,7 +91,10 @@ TEST(Threads, ImpactWithContactErosionAndRigidBodyIsBitIdentical) {
                              sa.blocks[blk].stress.size() * sizeof(double)));
     EXPECT_EQ(0, std::memcmp(sa.blocks[blk].history.data(), sb.blocks[blk].history.data(),
                              sa.blocks[blk].history.size() * sizeof(double)));
+    EXPECT_EQ(0, std::memcmp(sa.blocks[blk].hourglass.data(), sb.blocks[blk].hourglass.data(),
+                             sa.blocks[blk].hourglass.size() * sizeof(double)));
   }
+  EXPECT_EQ(sa.hourglass_energy, sb.hourglass_energy);
   for (std::size_t e = 0; e < model.blocks[0].size(); ++e)
     ASSERT_EQ(a->element_alive(0, Index(e)), b->element_alive(0, Index(e))) << "element " << e;
   EXPECT_EQ(0, std::memcmp(&a->rigid_bodies()[0], &b->rigid_bodies()[0], sizeof(solver::RigidBodyState)));
@@ -99,6 +103,9 @@ TEST(Threads, ImpactWithContactErosionAndRigidBodyIsBitIdentical) {
   EXPECT_EQ(sa.internal_energy, sb.internal_energy);
   EXPECT_EQ(sa.dt_next_half, sb.dt_next_half);
 }
+
+TEST(Threads, ImpactWithContactErosionAndRigidBodyIsBitIdentical) { impact_is_bit_identical(4); }
+TEST(Threads, ImpactWithAssumedStrainHourglassIsBitIdentical) { impact_is_bit_identical(6); }
 
 }  // namespace
 }  // namespace plyimpact
