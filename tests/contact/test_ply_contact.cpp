@@ -22,6 +22,7 @@
 
 #include "config/scene_loader.hpp"
 #include "contact/bonded_interfaces.hpp"
+#include "core/error.hpp"
 #include "interface/interface_tiebreaks.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
@@ -305,6 +306,29 @@ TEST(PlyContact, SeparatedPliesSlideWithFrictionWithoutPenetrating) {
   // stick-slip friction under 4000 g); the plies' contact must not make it worse.
   EXPECT_LT(created, 1e-3 * solver.state().initial_total_energy);
   EXPECT_LT(ratio_err, 0.02);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The reader: a single surface takes its parts from `surfaces: [...]` (one list) or `parts:`.
+
+TEST(PlyContact, SingleSurfaceReadsItsPartsFromSurfacesOrParts) {
+  PlyScene s;
+  const std::string text = yaml(s, {"ply_1_0", "ply_2_90"});
+  const config::Scene a = config::load_scene_from_string(text, "plies.yaml");
+  ASSERT_EQ(a.contacts.size(), 1u);
+  EXPECT_EQ(a.contacts[0].type, config::ContactSpec::Type::SingleSurface);
+  EXPECT_TRUE(a.contacts[0].eroding);
+  EXPECT_EQ(a.contacts[0].surface_a, (std::vector<std::string>{"ply_1_0", "ply_2_90"}));
+  std::string both = text;
+  both.replace(both.find("surfaces: ["), 11, "parts: [ply_1_0], surfaces: [");
+  try {
+    config::load_scene_from_string(both, "plies.yaml");
+    ADD_FAILURE() << "both lists accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("plies.yaml:"), std::string::npos) << what;
+    EXPECT_NE(what.find("both surfaces and parts"), std::string::npos) << what;
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
