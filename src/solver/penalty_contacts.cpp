@@ -23,6 +23,11 @@ model::Subsystem PenaltyContacts::describe(const model::Model& model) {
       << ", SOFT " << ct.spec.SOFT;
     if (ct.spec.FS > 0 || ct.spec.FD > 0) c << ", friction FS " << ct.spec.FS << " FD " << ct.spec.FD;
   }
+  bool tiebreaks = false;
+  for (const auto& itf : model.interfaces) tiebreaks = tiebreaks || itf.tiebreak.has_value();
+  if (tiebreaks)
+    c << "; node-segment pairs a tiebreak holds are left out (a bonded pair: the faces across its interface; "
+         "a separated pair: its partner's faces, where the pair's own contact acts)";
   return {"contact", true, "penalty, node to segment, bucket search; " + c.str()};
 }
 
