@@ -726,8 +726,12 @@ std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
           is_rigid_part(scene, spec.surface_b[0]))
         s.fail("both surfaces are rigid", "at least one deformable surface");
     } else {
-      if (c.has("surfaces")) c.at("surfaces", "").fail("surfaces is for surface-to-surface contact", "parts: [...]");
-      spec.surface_a = read_surface(c.at("parts", "a list of part names"), names);
+      // One surface: its parts under `parts`, or as the one list of `surfaces` (the plies' contact
+      // reads as `surfaces: [ply_1, ply_2, ...]` like the surface-to-surface ones).
+      if (c.has("surfaces") && c.has("parts"))
+        c.at("surfaces", "").fail("both surfaces and parts on a single-surface contact", "one list: parts: [...] or surfaces: [...]");
+      const char* what = "a list of part names (one surface in contact with itself)";
+      spec.surface_a = read_surface(c.has("surfaces") ? c.at("surfaces", what) : c.at("parts", what), names);
     }
     spec.SOFT = c.int_choice_or("SOFT", 0, {0, 1, 2});
     spec.SOFSCL = c.quantity_or("SOFSCL", u::dimensionless, spec.SOFSCL,

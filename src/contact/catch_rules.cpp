@@ -5,6 +5,8 @@
 #include <cstring>
 #include <span>
 
+#include "contact/bonded_interfaces.hpp"
+
 namespace plyimpact::contact {
 
 long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHistory& springs, std::size_t i,
@@ -84,6 +86,7 @@ long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHis
       for (int k = 0; k < 8; ++k) own = own || o[k] == node;
       if (own) return;
     }
+    if (set.bonded() != nullptr && set.bonded()->excludes(node, q)) return;  // a tiebreak holds the pair
     if (nn_len < 0) {
       nn = search.node_normal(set, i, x);
       nn_len = std::sqrt(dot3(nn, nn));

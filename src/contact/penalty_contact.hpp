@@ -84,6 +84,10 @@ class PenaltyContact {
   // that led to x (0 for the initial evaluation); time: t^{n+1} (for the penetration records).
   void apply(const double* x, const double* v, double* f, double dt, double time = 0);
 
+  // Leaves out the node-segment pairs a tiebreak holds (contact/bonded_interfaces); before
+  // resolve_initial_penetrations. Not owned.
+  void exclude_bonded(const BondedInterfaces* rule) { set_.exclude_bonded(rule); }
+
   // After element deletion: rebuild the surfaces from the active elements at x (eroding contact).
   void rebuild(const AliveMask& alive, const std::vector<double>& x);
 

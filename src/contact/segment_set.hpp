@@ -24,6 +24,8 @@
 
 namespace plyimpact::contact {
 
+class BondedInterfaces;
+
 // What a segment set is assembled from.
 struct SegmentSetSpec {
   std::vector<int> blocks[2];          // element blocks of side A and B
@@ -94,6 +96,11 @@ class SegmentSet {
   Index force_node_of_node(std::size_t i) const { return node_force_[i]; }
   const Index* force_nodes_of_segment(std::size_t s) const { return &seg_force_[4 * s]; }
 
+  // Node-segment pairs a tiebreak holds (contact/bonded_interfaces), left out of the contact; null:
+  // none. Not owned; it outlives the set.
+  void exclude_bonded(const BondedInterfaces* rule) { bonded_ = rule; }
+  const BondedInterfaces* bonded() const { return bonded_; }
+
   // Everything a rebuild changes (the constant parts, surface builders and rigid flags, are the
   // model's and are not visited).
   void visit_state(StateVisitor& visitor);
@@ -111,6 +118,7 @@ class SegmentSet {
   const model::Model* model_ = nullptr;
   SegmentSetSpec spec_;
   SurfaceBuilder builder_[2];
+  const BondedInterfaces* bonded_ = nullptr;
   std::vector<char> node_rigid_;  // (num model nodes) slaved to a rigid body
   // Segments.
   std::vector<Index> seg_nodes_, seg_owner_;

@@ -224,6 +224,7 @@ class Converter {
         {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE", &Converter::contact},
         {"CONTACT_ERODING_SURFACE_TO_SURFACE", &Converter::contact},
         {"CONTACT_AUTOMATIC_SINGLE_SURFACE", &Converter::contact},
+        {"CONTACT_ERODING_SINGLE_SURFACE", &Converter::contact},
         {"CONTACT_AUTOMATIC_ONE_WAY_SURFACE_TO_SURFACE_TIEBREAK", &Converter::contact},
         {"CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_TIEBREAK", &Converter::contact},
         {"RIGIDWALL_PLANAR", &Converter::rigidwall_planar},

@@ -16,7 +16,7 @@ const std::vector<ContributorType>& contributor_types() {
          return std::make_unique<Gravity>(s.model);
        }},
       {&PenaltyContacts::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
-         return std::make_unique<PenaltyContacts>(s.model, s.x, s.dt_initial, s.dt_element);
+         return std::make_unique<PenaltyContacts>(s.model, s.x, s.dt_initial, s.dt_element, &s.contributors);
        }},
       {&RigidWalls::describe, [](ContributorSetup& s) -> std::unique_ptr<ForceContributor> {
          return std::make_unique<RigidWalls>(s.model);

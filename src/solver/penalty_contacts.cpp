@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "interface/interface_tiebreaks.hpp"
 
 namespace plyimpact::solver {
 
@@ -22,14 +23,22 @@ model::Subsystem PenaltyContacts::describe(const model::Model& model) {
       << ", SOFT " << ct.spec.SOFT;
     if (ct.spec.FS > 0 || ct.spec.FD > 0) c << ", friction FS " << ct.spec.FS << " FD " << ct.spec.FD;
   }
+  bool tiebreaks = false;
+  for (const auto& itf : model.interfaces) tiebreaks = tiebreaks || itf.tiebreak.has_value();
+  if (tiebreaks)
+    c << "; node-segment pairs a tiebreak holds are left out (a bonded pair: the faces across its interface; "
+         "a separated pair: its partner's faces, where the pair's own contact acts)";
   return {"contact", true, "penalty, node to segment, bucket search; " + c.str()};
 }
 
 PenaltyContacts::PenaltyContacts(const model::Model& model, std::vector<double>& x, double dt_initial,
-                                 double dt_element) {
+                                 double dt_element, const std::vector<std::unique_ptr<ForceContributor>>* contributors)
+    : contributors_(contributors) {
+  if (auto rule = std::make_unique<contact::BondedInterfaces>(model); !rule->empty()) bonded_ = std::move(rule);
   contacts_.reserve(model.contacts.size());
   for (const auto& c : model.contacts) {
     contacts_.emplace_back(model, c, x, dt_initial);
+    contacts_.back().exclude_bonded(bonded_.get());
     initial_penetrations_.push_back(contacts_.back().resolve_initial_penetrations(x));
   }
   // A priori check of the stiffest spring that can form (the run itself combines the element step
@@ -57,7 +66,16 @@ PenaltyContacts::PenaltyContacts(const model::Model& model, std::vector<double>&
   }
 }
 
+void PenaltyContacts::bind_interfaces() {
+  bound_ = true;
+  if (!bonded_ || contributors_ == nullptr) return;
+  for (const auto& c : *contributors_)
+    if (const auto* itf = dynamic_cast<const interface::InterfaceTiebreaks*>(c.get()))
+      for (std::size_t k = 0; k < itf->pairs().size(); ++k) bonded_->bind(itf->interface_ids()[k], &itf->pairs()[k].damage());
+}
+
 void PenaltyContacts::apply(const ForceContext& ctx) {
+  if (!bound_) bind_interfaces();
   double ec = 0, ef = 0;
   for (auto& c : contacts_) {
     c.apply(ctx.x, ctx.v, ctx.f, ctx.dt, ctx.time);

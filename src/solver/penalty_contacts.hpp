@@ -5,8 +5,16 @@
 // when that is below the element step (so a first contact cannot drive a node a whole element
 // step deep into a stiff spring). Energies: contact (SLNTEN = 2, friction and damping included)
 // and, shown on its own, friction.
+// With delaminating interfaces, every contact leaves out the node-segment pairs a tiebreak holds
+// (contact/bonded_interfaces: bonded pairs, and a separated pair's own faces): the rule is built
+// from the model's pairs here and reads the pairs' damage from the interfaces' contributor, which
+// the solver builds after this one, so it is bound at the first apply (and counts every pair as
+// bonded until then: the initial penetrations see the bonded plies at t = 0).
 #pragma once
 
+#include <memory>
+
+#include "contact/bonded_interfaces.hpp"
 #include "contact/penalty_contact.hpp"
 #include "solver/force_contributor.hpp"
 
@@ -17,7 +25,9 @@ class PenaltyContacts : public ForceContributor {
   static model::Subsystem describe(const model::Model& model);
   // x: positions at t = 0 (initial penetrations may move nodes onto the surface); dt_initial: the
   // initial solution step (TSSFAC applied); dt_element: the elements' stable step (no TSSFAC).
-  PenaltyContacts(const model::Model& model, std::vector<double>& x, double dt_initial, double dt_element);
+  // contributors: the solver's list, where the interfaces' damage is found (null: none bound).
+  PenaltyContacts(const model::Model& model, std::vector<double>& x, double dt_initial, double dt_element,
+                  const std::vector<std::unique_ptr<ForceContributor>>* contributors = nullptr);
 
   std::string name() const override { return "contact"; }
   void apply(const ForceContext& context) override;
@@ -35,9 +45,16 @@ class PenaltyContacts : public ForceContributor {
 
   const std::vector<contact::PenaltyContact>& contacts() const { return contacts_; }
   const std::vector<contact::InitialPenetrations>& initial_penetrations() const { return initial_penetrations_; }
+  const contact::BondedInterfaces* bonded_interfaces() const { return bonded_.get(); }
 
  private:
+  // Binds the interfaces' damage to bonded_ (once the solver's list is complete).
+  void bind_interfaces();
+
   std::vector<contact::PenaltyContact> contacts_;
+  std::unique_ptr<contact::BondedInterfaces> bonded_;  // null: no delaminating interface
+  const std::vector<std::unique_ptr<ForceContributor>>* contributors_ = nullptr;
+  bool bound_ = false;
   std::vector<contact::InitialPenetrations> initial_penetrations_;
   std::vector<std::string> warnings_;
   double dt_floor_ = 0;             // s, a priori step when stiffer than the elements, else 0

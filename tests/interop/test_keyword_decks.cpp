@@ -379,6 +379,18 @@ TEST(KeywordRefusals, SegmentSetContactIsRefusedAndSingleSurfaceZeroTakesEveryPa
   fs::remove_all(dir);
 }
 
+TEST(KeywordDecks, ErodingSingleSurfaceMapsOntoAnErodingSingleSurfaceContact) {
+  const fs::path dir = test::scratch_dir();
+  const std::string mesh = "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+                           "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n";
+  // Cards 1-3 (every part, FS 0.2) and the ERODING card (ISYM EROSOP IADJ = 0 1 0).
+  const auto c = convert_text(dir, kCube + mesh + "*CONTACT_ERODING_SINGLE_SURFACE\n0\n0.2\n\n0,1,0\n");
+  ASSERT_FALSE(c.refused()) << keyword::refusals(c);
+  EXPECT_NE(c.yaml.find("type: eroding_single_surface\n    parts: [part_1]"), std::string::npos) << c.yaml;
+  EXPECT_NE(c.yaml.find("FS: 0.2"), std::string::npos) << c.yaml;
+  fs::remove_all(dir);
+}
+
 // Two unit cubes stacked with their own nodes (parts 1 and 2) and a tiebreak contact between them.
 std::string two_cubes(const std::string& tiebreak_card) {
   return "*CONTROL_TERMINATION\n1.0e-6\n*PART\nlower\n1,1,1\n*PART\nupper\n2,1,1\n*SECTION_SOLID\n1\n"
