@@ -16,9 +16,11 @@ namespace plyimpact::solver {
 
 namespace {
 constexpr std::size_t kNodeChunk = 4096;  // fixed (not per thread) so sums do not depend on threads
-// Below this many elements a cycle is too short to pay for the per-colour barriers of a parallel
-// element pass (and an oversubscribed machine makes each barrier cost a time slice): run serially.
-// The arithmetic and the summation order are the same either way.
+// Below this many elements the cycle runs on one thread. Chosen from measurement (BENCHMARKS.md,
+// "Threads"): with the element pass ordered by chunk dependencies instead of a barrier per colour,
+// and contact and interfaces parallel too, two threads pay off on the 7,488-element default scene;
+// at a few hundred elements the few synchronisation points per cycle outweigh the work. The
+// arithmetic and the summation order are the same either way.
 constexpr std::size_t kParallelMinElements = 1024;
 
 // Indices into phase_times_ (the contributors follow).
@@ -285,6 +287,7 @@ void Solver::update_step_bounds() {
 }
 
 void Solver::step() {
+  thread_choice_.before_cycle(state_.cycle);
   const auto t_start = Clock::now();
   State& s = state_;
   const double dt_half = s.dt_next_half;
@@ -374,6 +377,7 @@ void Solver::step() {
   phase_times_[kNodeUpdate].seconds += seconds(t_start, t_nodes);
   phase_times_[kElementPass].seconds += seconds(t_nodes, t_elements);
   phase_times_[kElementChecks].seconds += seconds(t_elements, t_checks);
+  thread_choice_.after_cycle(s.cycle, seconds(t_start, Clock::now()));
 }
 
 void Solver::record_balance(double kinetic, double external_work) {
@@ -609,7 +613,10 @@ void Solver::mark_crashfront(const std::vector<Index>& eroded) {
     }
 }
 
-int Solver::threads_used() const { return parallel_ ? omp_get_max_threads() : 1; }
+int Solver::threads_used() const {
+  if (thread_choice_.enabled()) return thread_choice_.chosen();
+  return parallel_ ? omp_get_max_threads() : 1;
+}
 
 std::string Solver::part_of_element(Index id) const {
   for (const auto& blk : model_.blocks)

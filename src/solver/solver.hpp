@@ -23,6 +23,7 @@
 #include "solver/rigid_body.hpp"
 #include "solver/rigid_walls.hpp"
 #include "solver/state.hpp"
+#include "solver/thread_choice.hpp"
 
 namespace plyimpact::solver {
 
@@ -52,6 +53,9 @@ class Solver {
 
   // OpenMP threads the cycle actually uses (1 below the size where a parallel pass pays off).
   int threads_used() const;
+  // Let the solver pick one or all OpenMP threads by timing both now and then (ThreadChoice); for
+  // runs whose thread count the user left open. Off by default: the current count is used.
+  void choose_threads_by_timing(bool on) { thread_choice_.enable(on && parallel_); }
 
   // Wall seconds spent in each part of the cycle since construction (profiling; a few clock reads
   // per cycle). Names: "node update", "element pass", "element checks" (sums, erosion, crashfront)
@@ -131,7 +135,8 @@ class Solver {
   std::vector<std::size_t> energy_counts_;  // (num contributors) energies each reports
   std::vector<double> energy_scratch_;     // (max energies of one contributor)
   std::vector<std::string> warnings_;
-  std::vector<PhaseTime> phase_times_;  // kNodeUpdate, kElementPass, kElementChecks, then per contributor
+  std::vector<PhaseTime> phase_times_;
+  ThreadChoice thread_choice_;  // kNodeUpdate, kElementPass, kElementChecks, then per contributor
   double dt_element_crit_ = 0;              // s, element stable step of the last pass (no TSSFAC)
   // Element deletion: alive[b][e] (empty vector = all alive) and, per chunk, its alive ranges.
   contact::AliveMask alive_;
