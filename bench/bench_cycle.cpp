@@ -2,7 +2,7 @@
 // for ELFORM 1 + IHQ 4 + *MAT_002 hexahedra, on 1e4, 1e5 and 1e6 elements, with 1 and 2 OpenMP
 // threads (ns per element-cycle: median and minimum of five batches, wall clock, and the median
 // process CPU time). Usage: bench [max_elements [max_threads]]   (defaults 1e6, 2). Figures go to
-// BENCHMARKS.md.
+// BENCHMARKS.md. `bench --scene FILE ...` profiles a scene per subsystem instead (bench_scene.cpp).
 #include <omp.h>
 
 #include <algorithm>
@@ -48,7 +48,10 @@ static model::Model make_model(int nx, int ny, int nz) {
   return m;
 }
 
+int bench_scene(int argc, char** argv);  // bench_scene.cpp
+
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--scene") return bench_scene(argc, argv);
   const double max_elements = argc > 1 ? std::atof(argv[1]) : 1e6;
   const int max_threads = argc > 2 ? std::atoi(argv[2]) : 2;
   struct Size { int nx, ny, nz, cycles; };

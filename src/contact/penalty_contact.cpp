@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 #include "contact/catch_rules.hpp"
 
 namespace plyimpact::contact {
@@ -44,6 +46,8 @@ void PenaltyContact::start(const std::vector<double>& x) {
   const std::size_t U = set_.num_force_nodes();
   fc_.assign(3 * U, 0.0);
   rows_.assign(U, 0.0);
+  outcomes_.resize(set_.num_nodes());
+  outcome_count_.assign((set_.num_nodes() + kNodeChunk - 1) / kNodeChunk, 0);
   search_.reset(set_, x.data());
   bounds_ = stiffness_bounds(set_, law_, model_.mass);
   search_.sort(set_, x.data(), 0.0, springs_.exposed_pass);
@@ -72,7 +76,7 @@ InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<dou
   return r;
 }
 
-[[gnu::always_inline]] inline void PenaltyContact::update_exposure(std::size_t i, long s, long last,
+[[gnu::always_inline]] inline bool PenaltyContact::update_exposure(std::size_t i, long s, long last,
                                                                    const Projection& pr) {  // per active node
   // Erosion exposed a face already behind this node, within the face proper (or made it a surface
   // node already behind a face): nothing crossed anything, so a spring of that depth would be
@@ -81,20 +85,22 @@ InitialPenetrations PenaltyContact::resolve_initial_penetrations(std::vector<dou
   // it then lands on): the force starts from zero and grows with further penetration; the offset
   // relaxes as the node backs out and ends when it leaves the face.
   SpringHistory& h = springs_;
+  bool booked = false;
   if (h.exposed_pass && last < 0 && (h.new_node[i] || h.new_segment[std::size_t(s)]) && std::abs(pr.xi) <= 1 &&
       std::abs(pr.eta) <= 1) {
     h.exposure_segment[i] = s;
     h.exposure_offset[i] = pr.gap - h.offset[i];
-    ++exposures_;
+    booked = true;
   } else if (s != h.exposure_segment[i]) {  // the offset belongs to the face it was found on
     h.exposure_segment[i] = -1;
     h.exposure_offset[i] = 0;
   }
   if (s == h.exposure_segment[i]) h.exposure_offset[i] = std::max(h.exposure_offset[i], pr.gap - h.offset[i]);  // relaxes
+  return booked;
 }
 
-void PenaltyContact::check_release(std::size_t i, long last, const double* x, double time) {
-  if (last < 0) return;  // its segment did not survive an eroding rebuild: nothing to compare with
+double PenaltyContact::release_depth(std::size_t i, long last, const double* x) {
+  if (last < 0) return 0;  // its segment did not survive an eroding rebuild: nothing to compare with
   const Index node = set_.node_id(i);
   // Behind the face and over it, with a margin of four times the MAXPAR tolerance: a node pressed
   // into a corner of the surface (an impactor's pole over a node of the plate) is released when
@@ -102,13 +108,89 @@ void PenaltyContact::check_release(std::size_t i, long last, const double* x, do
   const double margin = 1 + 4 * std::max(search_.options().MAXPAR - 1, 0.0);
   const Projection pr = project_to_bilinear(&x[3 * std::size_t(node)], search_.record(set_, std::size_t(last), x), margin);
   const double g = pr.gap - springs_.offset_on(i, last);
-  if (!pr.inside || !(g < 0)) return;  // left the face (lifted off or slid past its edge)
-  Penetrations& p = penetrations_;
-  const PenetrationEvent e{node, time, -g};
-  if (p.count == 0) p.first = e;
-  if (e.depth > p.deepest.depth) p.deepest = e;
-  p.last = e;
-  ++p.count;
+  if (!pr.inside || !(g < 0)) return 0;  // left the face (lifted off or slid past its edge)
+  return -g;
+}
+
+bool PenaltyContact::evaluate_node(std::size_t i, const double* x, const double* v, double dt, double v_max,
+                                   bool friction, NodeOutcome& out) {
+  SpringHistory& h = springs_;
+  Projection pr;
+  const double* vi = &v[3 * std::size_t(set_.node_id(i))];
+  const long s = catch_segment(set_, search_, h, i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max), v, dt);
+  double* ft = &h.ft[3 * i];
+  const bool entering = !h.engaged[i];
+  const long last = h.segment[i];
+  h.segment[i] = s;
+  h.engaged[i] = s >= 0;
+  if (s < 0) {  // released: the spring and its potential end here
+    if (entering) return false;  // (a node that was not in contact has all of this at zero already)
+    const double depth = release_depth(i, last, x);
+    h.release(i);
+    if (!(depth > 0)) return false;
+    out.i = i;
+    out.s = -1;
+    out.depth = depth;
+    return true;
+  }
+  out.i = i;
+  out.s = s;
+  out.exposure = update_exposure(i, s, last, pr);
+  const Index node = set_.node_id(i);
+  const Index* q = set_.segment_nodes(std::size_t(s));
+  const double* n = pr.normal;
+  double vrel[3];
+  for (int d = 0; d < 3; ++d) {
+    vrel[d] = v[3 * std::size_t(node) + d];
+    for (int a = 0; a < 4; ++a) vrel[d] -= pr.N[a] * v[3 * std::size_t(q[a]) + d];
+  }
+  const double vn = dot3(vrel, n);
+  // A new spring (the node engages, or moves on to another segment) whose node was already behind
+  // that face before this step's motion, deeper than its old spring (none: 0), did not cross the
+  // face in this step (within the face proper; beside it catch_segment does not take it). Taken
+  // at its whole depth it would be a spring nobody compressed (0.5 k g^2 from nothing, up to the
+  // catch depth); offset like an exposure, it continues from the old spring's depth and grows
+  // with this step's motion.
+  if (s != last && s != h.exposure_segment[i]) {
+    const double start = last < 0 ? 0.0 : std::min(h.gap[i], 0.0), g0 = pr.gap - h.offset[i] - vn * dt;
+    if (g0 < start) {
+      h.exposure_segment[i] = s;
+      h.exposure_offset[i] = g0 - start;
+    }
+  }
+  const double g = pr.gap - h.offset_on(i, s);
+  const double k = law_.stiffness(set_, i, std::size_t(s));
+  const double fn = law_.normal_force(set_, i, std::size_t(s), k, g, vn);
+  for (int d = 0; d < 3; ++d) out.F[d] = fn * n[d];
+  out.friction_work = out.tangential = 0;
+  if (friction) {
+    double vt[3];
+    law_.friction_update(ft, n, vrel, vn, k, fn, dt, vt);
+    for (int d = 0; d < 3; ++d) out.F[d] += ft[d];
+    out.friction_work = dot3(ft, vt) * dt;
+    out.tangential = std::sqrt(dot3(ft, ft));
+  }
+  // Damping (VDC) dissipates -(f_n - f_spring) v_n dt: the normal force beyond the spring's k |g|
+  // against the normal relative velocity.
+  out.damping_work = (fn + k * g) * vn * dt;
+  h.gap[i] = g;
+  h.k[i] = k;
+  for (int d = 0; d < 3; ++d) h.fn[3 * i + d] = fn * n[d];
+  out.fn = fn;
+  out.potential = 0.5 * k * g * g;
+  out.k = k;
+  for (int a = 0; a < 4; ++a) out.N[a] = pr.N[a];
+  // Stability: the spring is k b b^T (x) D, b = (1, -N_1..-N_4) over the node and the segment
+  // nodes, D <= k I (normal spring; the friction return map never exceeds the same k
+  // tangentially). Gershgorin on M^-1 K: row j gets k |b_j| sum_l |b_l| over deformable nodes
+  // (rigid nodes move with their body, whose mass is far larger; their rows and columns drop out).
+  const Index ui = set_.force_node_of_node(i);
+  const Index* ql = set_.force_nodes_of_segment(std::size_t(s));
+  double sum_b = set_.force_node_inv_mass(std::size_t(ui)) > 0 ? 1.0 : 0.0;
+  for (int a = 0; a < 4; ++a)
+    if (set_.force_node_inv_mass(std::size_t(ql[a])) > 0) sum_b += pr.N[a];
+  out.sum_b = sum_b;
+  return true;
 }
 
 void PenaltyContact::apply(const double* x, const double* v, double* f, double dt, double time) {
@@ -123,85 +205,52 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   std::fill(fc_.begin(), fc_.end(), 0.0);
   forces_ = ContactForces{};
   const bool friction = law_.friction();
-  double friction_work = 0, damping_work = 0;
   const double v_max = std::sqrt(v_max2);
-  SpringHistory& h = springs_;
-  for (std::size_t i = 0; i < N; ++i) {
-    Projection pr;
-    const double* vi = &v[3 * std::size_t(set_.node_id(i))];
-    const long s = catch_segment(set_, search_, h, i, x, pr, 2.0 * dt * (std::sqrt(dot3(vi, vi)) + v_max), v, dt);
-    double* ft = &h.ft[3 * i];
-    const bool entering = !h.engaged[i];
-    const long last = h.segment[i];
-    h.segment[i] = s;
-    h.engaged[i] = s >= 0;
-    if (s < 0) {  // released: the spring and its potential end here
-      if (!entering) {  // (a node that was not in contact has all of this at zero already)
-        check_release(i, last, x, time);
-        h.release(i);
+  // Search and law per node, in parallel: each node writes its own history and outcome slot.
+  // Dynamic: the nodes near the other surface (few chunks) cost far more than the rest.
+  const long chunks = long(outcome_count_.size());
+#pragma omp parallel for schedule(dynamic) if (N >= 2 * kNodeChunk && omp_get_max_threads() > 1)
+  for (long c = 0; c < chunks; ++c) {
+    const std::size_t begin = std::size_t(c) * kNodeChunk, end = std::min(N, begin + kNodeChunk);
+    std::size_t count = 0;
+    for (std::size_t i = begin; i < end; ++i)
+      if (evaluate_node(i, x, v, dt, v_max, friction, outcomes_[begin + count])) ++count;
+    outcome_count_[std::size_t(c)] = count;
+  }
+  // In node order, as one thread would: forces on the force nodes, stability rows, sums, records.
+  double friction_work = 0, damping_work = 0;
+  for (long c = 0; c < chunks; ++c) {
+    const NodeOutcome* o = &outcomes_[std::size_t(c) * kNodeChunk];
+    for (const NodeOutcome* end = o + outcome_count_[std::size_t(c)]; o != end; ++o) {
+      if (o->s < 0) {
+        Penetrations& p = penetrations_;
+        const PenetrationEvent e{set_.node_id(o->i), time, o->depth};
+        if (p.count == 0) p.first = e;
+        if (e.depth > p.deepest.depth) p.deepest = e;
+        p.last = e;
+        ++p.count;
+        continue;
       }
-      continue;
-    }
-    update_exposure(i, s, last, pr);
-    const Index node = set_.node_id(i);
-    const Index* q = set_.segment_nodes(std::size_t(s));
-    const double* n = pr.normal;
-    double vrel[3];
-    for (int d = 0; d < 3; ++d) {
-      vrel[d] = v[3 * std::size_t(node) + d];
-      for (int a = 0; a < 4; ++a) vrel[d] -= pr.N[a] * v[3 * std::size_t(q[a]) + d];
-    }
-    const double vn = dot3(vrel, n);
-    // A new spring (the node engages, or moves on to another segment) whose node was already behind
-    // that face before this step's motion, deeper than its old spring (none: 0), did not cross the
-    // face in this step (within the face proper; beside it catch_segment does not take it). Taken
-    // at its whole depth it would be a spring nobody compressed (0.5 k g^2 from nothing, up to the
-    // catch depth); offset like an exposure, it continues from the old spring's depth and grows
-    // with this step's motion.
-    if (s != last && s != h.exposure_segment[i]) {
-      const double start = last < 0 ? 0.0 : std::min(h.gap[i], 0.0), g0 = pr.gap - h.offset[i] - vn * dt;
-      if (g0 < start) {
-        h.exposure_segment[i] = s;
-        h.exposure_offset[i] = g0 - start;
+      if (o->exposure) ++exposures_;
+      if (friction) {
+        friction_work -= o->friction_work;
+        forces_.tangential += o->tangential;
       }
+      damping_work -= o->damping_work;
+      forces_.normal += o->fn;
+      forces_.potential += o->potential;
+      ++forces_.active;
+      const Index ui = set_.force_node_of_node(o->i);
+      double* fs = &fc_[3 * std::size_t(ui)];
+      for (int d = 0; d < 3; ++d) fs[d] += o->F[d];
+      const Index* ql = set_.force_nodes_of_segment(std::size_t(o->s));
+      for (int a = 0; a < 4; ++a) {
+        double* fm = &fc_[3 * std::size_t(ql[a])];
+        for (int d = 0; d < 3; ++d) fm[d] -= o->N[a] * o->F[d];
+      }
+      rows_[std::size_t(ui)] += o->k * o->sum_b;
+      for (int a = 0; a < 4; ++a) rows_[std::size_t(ql[a])] += o->k * o->N[a] * o->sum_b;
     }
-    const double g = pr.gap - h.offset_on(i, s);
-    const double k = law_.stiffness(set_, i, std::size_t(s));
-    const double fn = law_.normal_force(set_, i, std::size_t(s), k, g, vn);
-    double F[3] = {fn * n[0], fn * n[1], fn * n[2]};
-    if (friction) {
-      double vt[3];
-      law_.friction_update(ft, n, vrel, vn, k, fn, dt, vt);
-      for (int d = 0; d < 3; ++d) F[d] += ft[d];
-      friction_work -= dot3(ft, vt) * dt;
-      forces_.tangential += std::sqrt(dot3(ft, ft));
-    }
-    // Damping (VDC) dissipates -(f_n - f_spring) v_n dt: the normal force beyond the spring's k |g|
-    // against the normal relative velocity.
-    damping_work -= (fn + k * g) * vn * dt;
-    h.gap[i] = g;
-    h.k[i] = k;
-    for (int d = 0; d < 3; ++d) h.fn[3 * i + d] = fn * n[d];
-    forces_.normal += fn;
-    forces_.potential += 0.5 * k * g * g;
-    ++forces_.active;
-    const Index ui = set_.force_node_of_node(i);
-    double* fs = &fc_[3 * std::size_t(ui)];
-    for (int d = 0; d < 3; ++d) fs[d] += F[d];
-    const Index* ql = set_.force_nodes_of_segment(std::size_t(s));
-    for (int a = 0; a < 4; ++a) {
-      double* fm = &fc_[3 * std::size_t(ql[a])];
-      for (int d = 0; d < 3; ++d) fm[d] -= pr.N[a] * F[d];
-    }
-    // Stability: the spring is k b b^T (x) D, b = (1, -N_1..-N_4) over the node and the segment
-    // nodes, D <= k I (normal spring; the friction return map never exceeds the same k
-    // tangentially). Gershgorin on M^-1 K: row j gets k |b_j| sum_l |b_l| over deformable nodes
-    // (rigid nodes move with their body, whose mass is far larger; their rows and columns drop out).
-    double sum_b = set_.force_node_inv_mass(std::size_t(ui)) > 0 ? 1.0 : 0.0;
-    for (int a = 0; a < 4; ++a)
-      if (set_.force_node_inv_mass(std::size_t(ql[a])) > 0) sum_b += pr.N[a];
-    rows_[std::size_t(ui)] += k * sum_b;
-    for (int a = 0; a < 4; ++a) rows_[std::size_t(ql[a])] += k * pr.N[a] * sum_b;
   }
   // Scatter, side-A resultant and the work of the contact forces on the bodies (book_work).
   const std::vector<Index>& nodes = set_.force_nodes();
@@ -223,7 +272,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   damping_energy_ += damping_work;
   energy_ = forces_.potential + friction_energy_ + damping_energy_;
   dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
-  h.exposed_pass = false;
+  springs_.exposed_pass = false;
   fc_prev_.swap(fc_);
   std::copy(fc_prev_.begin(), fc_prev_.end(), fc_.begin());  // fc_ keeps the last forces for output
 }

@@ -22,8 +22,11 @@
 //   stability : a priori step of the stiffest single spring (check, warning) and, every pass, the
 //               Gershgorin bound of the active springs (spring_stable_step), which the solver
 //               combines with the element step.
-// Serial and allocation-free per cycle (buffers sized at construction or rebuild), so the result
-// does not depend on the thread count.
+// Threads: the search and law run per contact node in parallel (fixed chunks of nodes, any
+// schedule: each node writes only its own history and its outcome slot); the scatter into the
+// forces, the stability rows, the sums and the penetration records then follow serially in node
+// order, the order of a one-thread pass, so the result is bit-identical for any thread count.
+// Allocation-free per cycle (buffers sized at construction or rebuild).
 #pragma once
 
 #include <limits>
@@ -131,11 +134,28 @@ class PenaltyContact {
   // Books the work of the contact forces on the bodies: power_old = f^{last pass} . v, power_new =
   // f^{this pass} . v (v = v^{n+1/2}), dt = dt^{n+1/2}.
   void book_work(double power_old, double power_new, double dt);
-  // Node i, in contact with segment `last` at the last pass, is released now: a penetration if it
-  // is still behind that face (projecting onto it).
-  void check_release(std::size_t i, long last, const double* x, double time);
-  // Exposure offsets (spring_history) of node i found on segment s (last: its segment of the last pass).
-  void update_exposure(std::size_t i, long s, long last, const Projection& pr);
+  // What the pass found for one contact node, for the ordered scatter after the parallel loop:
+  // a spring on segment s, or (s = -1) a node released while still behind its face.
+  struct NodeOutcome {
+    std::size_t i = 0;
+    long s = -1;
+    double N[4] = {0, 0, 0, 0};  // shape functions of the contact point
+    double F[3] = {0, 0, 0};     // N, force on the node (normal + friction)
+    double k = 0, sum_b = 0;     // stiffness and the Gershgorin factor (apply)
+    double fn = 0, potential = 0, tangential = 0, friction_work = 0, damping_work = 0;
+    double depth = 0;            // m, released node behind the face
+    bool exposure = false;       // an exposure offset was booked
+  };
+  // Search, law and history of contact node i; fills `out` and returns true when the node has a
+  // spring or a penetration to record.
+  bool evaluate_node(std::size_t i, const double* x, const double* v, double dt, double v_max, bool friction,
+                     NodeOutcome& out);
+  // Node i, in contact with segment `last` at the last pass, is released now: how deep it still is
+  // behind that face (projecting onto it), 0 when it is not (a penetration otherwise).
+  double release_depth(std::size_t i, long last, const double* x);
+  // Exposure offsets (spring_history) of node i found on segment s (last: its segment of the last
+  // pass); true when one was booked.
+  bool update_exposure(std::size_t i, long s, long last, const Projection& pr);
 
   const model::Model& model_;
   model::Contact def_;
@@ -147,6 +167,10 @@ class PenaltyContact {
   // trapezoid of the contact work).
   std::vector<double> fc_, fc_prev_;
   std::vector<double> rows_;  // (U) Gershgorin row sums of the pass's springs, zeroed after use
+  // Outcomes of the parallel node loop: chunk c of kNodeChunk nodes writes from c kNodeChunk on.
+  static constexpr std::size_t kNodeChunk = 256;
+  std::vector<NodeOutcome> outcomes_;        // (N) slots
+  std::vector<std::size_t> outcome_count_;   // (num chunks)
   long exposures_ = 0;
   double energy_ = 0, friction_energy_ = 0, damping_energy_ = 0;
   double taken_ = 0;       // J, book_work

@@ -3,7 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include <omp.h>
+
 namespace plyimpact::contact {
+
+namespace {
+// Below this many items a loop of the search runs on one thread (a parallel region costs a few us).
+constexpr std::size_t kParallelMinItems = 2048;
+bool parallel_for(std::size_t items) { return items >= kParallelMinItems && omp_get_max_threads() > 1; }
+}  // namespace
 
 void SegmentSearch::reset(const SegmentSet& set, const double* x) {
   // Each segment's box is expanded by its own margin: release depth (the deepest accepted
@@ -48,17 +56,20 @@ void SegmentSearch::reset(const SegmentSet& set, const double* x) {
 PassMotion SegmentSearch::begin_pass(const SegmentSet& set, const double* x, const double* v) {
   ++cycles_since_sort_;
   ++pass_;  // every record is stale until first looked at
-  PassMotion m;
   const std::vector<Index>& nodes = set.force_nodes();
-  for (std::size_t u = 0; u < nodes.size(); ++u) {
-    const std::size_t node = std::size_t(nodes[u]);
+  const long U = long(nodes.size());
+  double moved2 = 0, v_max2 = 0;  // maxima: exact, whatever the order
+#pragma omp parallel for schedule(static) reduction(max : moved2, v_max2) if (parallel_for(nodes.size()))
+  for (long u = 0; u < U; ++u) {
+    const std::size_t node = std::size_t(nodes[std::size_t(u)]);
     const double* p = &x[3 * node];
     const double* vu = &v[3 * node];
-    const double dx = p[0] - x_sort_[3 * u], dy = p[1] - x_sort_[3 * u + 1], dz = p[2] - x_sort_[3 * u + 2];
-    m.moved2 = std::max(m.moved2, dx * dx + dy * dy + dz * dz);
-    m.v_max2 = std::max(m.v_max2, dot3(vu, vu));
+    const double* q = &x_sort_[3 * std::size_t(u)];
+    const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+    moved2 = std::max(moved2, dx * dx + dy * dy + dz * dz);
+    v_max2 = std::max(v_max2, dot3(vu, vu));
   }
-  return m;
+  return {v_max2, moved2};
 }
 
 void SegmentSearch::sort(const SegmentSet& set, const double* x, double step_depth, bool full_depth) {
@@ -115,26 +126,47 @@ void SegmentSearch::build_candidates(const SegmentSet& set, const double* x, boo
   // here: a list sized for it would hold every segment within ~0.4 element of the node, and make
   // nodes a plate's thickness away from the other surface search and refresh every cycle.
   // What remains is the node's bucket filtered to its neighbourhood, in bucket order.
+  // Per fixed chunk of nodes into the chunk's own buffer (kept between sorts, so no allocation
+  // once sizes settle), then the chunks concatenated in order: the lists are the same for any
+  // thread count.
   const std::size_t N = set.num_nodes();
   const double r_factor = 1 + 2 * std::max(options_.MAXPAR - 1, 0.0), half_a = 0.5 * list_allowance_;
+  const long chunks = long((N + kListChunk - 1) / kListChunk);
   cand_start_.resize(N + 1);
-  cand_.clear();
-  for (std::size_t i = 0; i < N; ++i) {
-    cand_start_[i] = Index(cand_.size());
-    const double* p = &x[3 * std::size_t(set.node_id(i))];
-    const int gs = set.other_side(i);
-    const std::vector<Index>& ids = side_segs_[gs];
-    for (Index k : grid_[gs].candidates(p)) {
-      const std::size_t s = std::size_t(ids[std::size_t(k)]);
-      const double* g = &records_[kRecord * s];
-      const double depth = full_depth ? g[7] : std::min(g[7], new_depth_cap_ + 0.02 * g[7]);
-      const double dx = p[0] - g[0], dy = p[1] - g[1], dz = p[2] - g[2];
-      const double reach = r_factor * (double(radius(g)) + half_a) + depth + half_a;
-      if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
-      cand_.push_back(Index(s));
+  if (chunk_cand_.size() < std::size_t(chunks)) chunk_cand_.resize(std::size_t(chunks));
+#pragma omp parallel for schedule(dynamic) if (parallel_for(N))
+  for (long c = 0; c < chunks; ++c) {
+    std::vector<Index>& out = chunk_cand_[std::size_t(c)];
+    out.clear();
+    const std::size_t end = std::min(N, std::size_t(c + 1) * kListChunk);
+    for (std::size_t i = std::size_t(c) * kListChunk; i < end; ++i) {
+      cand_start_[i] = Index(out.size());  // relative to the chunk until the concatenation
+      const double* p = &x[3 * std::size_t(set.node_id(i))];
+      const int gs = set.other_side(i);
+      const std::vector<Index>& ids = side_segs_[gs];
+      for (Index k : grid_[gs].candidates(p)) {
+        const std::size_t s = std::size_t(ids[std::size_t(k)]);
+        const double* g = &records_[kRecord * s];
+        const double depth = full_depth ? g[7] : std::min(g[7], new_depth_cap_ + 0.02 * g[7]);
+        const double dx = p[0] - g[0], dy = p[1] - g[1], dz = p[2] - g[2];
+        const double reach = r_factor * (double(radius(g)) + half_a) + depth + half_a;
+        if (dx * dx + dy * dy + dz * dz > reach * reach) continue;
+        out.push_back(Index(s));
+      }
     }
   }
-  cand_start_[N] = Index(cand_.size());
+  std::size_t total = 0;
+  for (long c = 0; c < chunks; ++c) total += chunk_cand_[std::size_t(c)].size();
+  cand_.resize(total);
+  std::size_t at = 0;
+  for (long c = 0; c < chunks; ++c) {
+    const std::vector<Index>& in = chunk_cand_[std::size_t(c)];
+    const std::size_t end = std::min(N, std::size_t(c + 1) * kListChunk);
+    for (std::size_t i = std::size_t(c) * kListChunk; i < end; ++i) cand_start_[i] += Index(at);
+    std::copy(in.begin(), in.end(), cand_.begin() + long(at));
+    at += in.size();
+  }
+  cand_start_[N] = Index(at);
 }
 
 void SegmentSearch::refresh_segment(const SegmentSet& set, std::size_t s, const double* x) {
@@ -157,7 +189,6 @@ void SegmentSearch::refresh_segment(const SegmentSet& set, std::size_t s, const 
   // Radius as a float rounded up (the sphere tests stay conservative) beside this pass's stamp.
   const float r = std::nextafter(float(std::sqrt(r2)), std::numeric_limits<float>::infinity());
   std::memcpy(g + 3, &r, sizeof r);
-  std::memcpy(reinterpret_cast<char*>(g + 3) + sizeof r, &pass_, sizeof pass_);
   // In-plane bounds for the catch rules' pre-check. A node the projection accepts is
   // p = x(xi, eta) + gap n with |xi|, |eta| <= m = MAXPAR, |gap| <= release depth D, and n normal
   // to t_xi = a1 + eta a3 (so n . a1 = -eta n . a3). Hence
@@ -184,12 +215,37 @@ void SegmentSearch::refresh_segment(const SegmentSet& set, std::size_t s, const 
     normal_bound[1] = float(1 / len);
   }
   std::memcpy(g + 11, normal_bound, sizeof normal_bound);
+  __atomic_store_n(stamp_word(g), pass_, __ATOMIC_RELEASE);  // last: a reader seeing it sees the record
+}
+
+void SegmentSearch::refresh_claimed(const SegmentSet& set, std::size_t s, const double* x) {
+  StampWord* w = stamp_word(&records_[kRecord * s]);
+  std::uint32_t seen = __atomic_load_n(w, __ATOMIC_ACQUIRE);
+  while (seen != pass_) {
+    if (seen != kRefreshing) {
+      if (__atomic_compare_exchange_n(w, &seen, kRefreshing, false, __ATOMIC_ACQ_REL, __ATOMIC_ACQUIRE)) {
+        refresh_segment(set, s, x);
+        return;
+      }
+    } else {
+#if defined(__x86_64__) || defined(__i386__)
+      __builtin_ia32_pause();
+#endif
+      seen = __atomic_load_n(w, __ATOMIC_ACQUIRE);
+    }
+  }
 }
 
 void SegmentSearch::refresh_all(const SegmentSet& set, const double* x) {
-  const std::size_t S = set.num_segments(), N = set.num_nodes();
-  for (std::size_t s = 0; s < S; ++s) refresh_segment(set, s, x);
-  for (std::size_t i = 0; i < N; ++i) node_normal(set, i, x);
+  // Each record and node normal is written by one iteration: no claiming needed.
+  const long S = long(set.num_segments()), N = long(set.num_nodes());
+#pragma omp parallel if (parallel_for(std::size_t(S + N)))
+  {
+#pragma omp for schedule(static)
+    for (long s = 0; s < S; ++s) refresh_segment(set, std::size_t(s), x);
+#pragma omp for schedule(static)
+    for (long i = 0; i < N; ++i) node_normal(set, std::size_t(i), x);
+  }
 }
 
 const double* SegmentSearch::node_normal(const SegmentSet& set, std::size_t i, const double* x) {

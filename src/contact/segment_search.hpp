@@ -81,10 +81,13 @@ class SegmentSearch {
   std::span<const Index> candidates(std::size_t i) const {
     return {cand_.data() + cand_start_[i], std::size_t(cand_start_[i + 1] - cand_start_[i])};
   }
-  // Record of segment s, refreshed at x if stale in this pass.
+  // Record of segment s, refreshed at x if stale in this pass. Safe to call from several threads
+  // within a pass: the first to find the record stale claims it through its stamp and refreshes
+  // it; the others wait for the stamp (a refresh is a deterministic function of x, so who does it
+  // does not change the result).
   const double* record(const SegmentSet& set, std::size_t s, const double* x) {
-    const double* g = &records_[kRecord * s];
-    if (stamp(g) != pass_) refresh_segment(set, s, x);
+    double* g = &records_[kRecord * s];
+    if (__atomic_load_n(stamp_word(g), __ATOMIC_ACQUIRE) != pass_) refresh_claimed(set, s, x);
     return g;
   }
   // Area-weighted outward normal of contact node i's own surface (8 a1 x a2 summed over its own
@@ -118,7 +121,15 @@ class SegmentSearch {
   void visit_state(StateVisitor& visitor);
 
  private:
+  // The stamp as a word for the atomic builtins (it shares slot 3 with the radius).
+  using StampWord = std::uint32_t __attribute__((may_alias));
+  static StampWord* stamp_word(double* g) { return reinterpret_cast<StampWord*>(reinterpret_cast<char*>(g + 3) + sizeof(float)); }
+  // Stamp of a record being refreshed by another thread (pass_ never reaches it).
+  static constexpr std::uint32_t kRefreshing = 0xFFFFFFFFu;
+  // Refreshes the record (stamp written last, with release); only one thread per record at a time.
   void refresh_segment(const SegmentSet& set, std::size_t s, const double* x);
+  // record()'s slow path: claim the stale record and refresh it, or wait for the thread that did.
+  void refresh_claimed(const SegmentSet& set, std::size_t s, const double* x);
 
   SearchOptions options_;
   AlignedVector<double, 128> records_;  // (S, kRecord)
@@ -132,6 +143,8 @@ class SegmentSearch {
   double new_depth_cap_ = 0;            // bound of the new-contact depth until the next sort, m
   double list_allowance_ = 0;           // motion allowed before the next sort (<= allowance_), m
   std::vector<Index> cand_start_, cand_;  // (CSR over contact nodes) candidate segments
+  static constexpr std::size_t kListChunk = 512;  // contact nodes per chunk of build_candidates
+  std::vector<std::vector<Index>> chunk_cand_;    // scratch of build_candidates, one list per chunk
   std::vector<double> x_sort_;          // (U, 3) force node positions at the last sort
   long cycles_since_sort_ = 0, sorts_ = 0;
 };

@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include <omp.h>
+
 namespace plyimpact::interface {
 
 namespace {
@@ -173,6 +175,17 @@ InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_elem
       stable_step_ = std::min(stable_step_, pairs_.back().stable_step());
     }
   }
+  // Interfaces may run in parallel when no node belongs to two of them (one element through each
+  // ply: a ply's lower and upper faces have distinct nodes).
+  std::vector<char> seen(model.num_nodes(), 0);
+  for (const auto& itf : model.interfaces) {
+    if (!itf.tiebreak) continue;
+    for (const auto* nodes : {&itf.lower_nodes, &itf.upper_nodes})
+      for (Index node : *nodes) {
+        if (seen[std::size_t(node)]) across_interfaces_ = false;
+        seen[std::size_t(node)] = 1;
+      }
+  }
   if (stable_step_ < dt_element) {
     std::ostringstream w;
     w << "interface stiffness controls the step: the stiffest tiebreak pair or cohesive node pair alone allows " << stable_step_
@@ -183,15 +196,19 @@ InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_elem
 }
 
 void InterfaceTiebreaks::apply(const solver::ForceContext& c) {
+  // One interface per iteration: with no node shared between interfaces each node's force gets
+  // the contributions of one interface only, added in that interface's own fixed order, so the
+  // forces do not depend on the thread count (and an interface's own parallel loop, nested here,
+  // runs on this iteration's thread). One parallel region for all interfaces instead of one each.
+  const long np = long(pairs_.size()), nk = np + long(cohesive_.size());
+#pragma omp parallel for schedule(dynamic) if (across_interfaces_ && nk > 1 && omp_get_max_threads() > 1)
+  for (long k = 0; k < nk; ++k) {
+    if (k < np) pairs_[std::size_t(k)].apply(c.x, c.v, c.f, c.dt);
+    else cohesive_[std::size_t(k - np)].apply(c.x, c.v, c.f, c.dt);
+  }
   double dt = std::numeric_limits<double>::infinity();
-  for (auto& p : pairs_) {
-    p.apply(c.x, c.v, c.f, c.dt);
-    dt = std::min(dt, p.stable_step());
-  }
-  for (auto& e : cohesive_) {
-    e.apply(c.x, c.v, c.f, c.dt);
-    dt = std::min(dt, e.stable_step());
-  }
+  for (const auto& p : pairs_) dt = std::min(dt, p.stable_step());
+  for (const auto& e : cohesive_) dt = std::min(dt, e.stable_step());
   stable_step_ = dt;
 }
 

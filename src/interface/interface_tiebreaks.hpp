@@ -63,6 +63,7 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
   std::vector<std::pair<bool, std::size_t>> columns_;  // per interface in id order: (cohesive, index)
   std::vector<std::string> warnings_;
   double stable_step_ = 0;
+  bool across_interfaces_ = true;  // no node in two interfaces: apply runs the interfaces in parallel
 };
 
 // The kernel of one interface (exposed for `check` and tests): pairs, areas, normals and faces of

@@ -40,6 +40,7 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
   };
   try {
     solver = std::make_unique<solver::Solver>(model);
+    solver->choose_threads_by_timing(model.control.threads == 0);  // --threads N fixes the count
     for (const auto& w : solver->warnings()) report.warnings.push_back(w);
     if (options.restart) {
       read_dump(*options.restart, *solver, observers);

@@ -1,9 +1,11 @@
 #include "solver/solver.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <omp.h>
+#include <sched.h>
 
 #include "core/error.hpp"
 #include "material/composite_damage.hpp"
@@ -14,10 +16,32 @@ namespace plyimpact::solver {
 
 namespace {
 constexpr std::size_t kNodeChunk = 4096;  // fixed (not per thread) so sums do not depend on threads
-// Below this many elements a cycle is too short to pay for the per-colour barriers of a parallel
-// element pass (and an oversubscribed machine makes each barrier cost a time slice): run serially.
-// The arithmetic and the summation order are the same either way.
-constexpr std::size_t kParallelMinElements = 8192;
+// Below this many elements the cycle runs on one thread. Chosen from measurement (BENCHMARKS.md,
+// "Threads"): with the element pass ordered by chunk dependencies instead of a barrier per colour,
+// and contact and interfaces parallel too, two threads pay off on the 7,488-element default scene;
+// at a few hundred elements the few synchronisation points per cycle outweigh the work. The
+// arithmetic and the summation order are the same either way.
+constexpr std::size_t kParallelMinElements = 1024;
+
+// Indices into phase_times_ (the contributors follow).
+constexpr std::size_t kNodeUpdate = 0, kElementPass = 1, kElementChecks = 2, kFirstContributor = 3;
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point from, Clock::time_point to) { return std::chrono::duration<double>(to - from).count(); }
+
+// Waits until a chunk's done flag reaches `pass`: spins briefly (the usual wait is a fraction of
+// a chunk), then yields the core (on an oversubscribed machine the owner may need it).
+void wait_for_pass(const std::uint64_t& flag, std::uint64_t pass) {
+  for (int spins = 0; __atomic_load_n(&flag, __ATOMIC_ACQUIRE) < pass; ++spins) {
+    if (spins < 4096) {
+#if defined(__x86_64__) || defined(__i386__)
+      __builtin_ia32_pause();
+#endif
+    } else {
+      sched_yield();
+    }
+  }
+}
 
 void merge(ChunkResult& total, const ChunkResult& r) {
   total.internal_energy += r.internal_energy;
@@ -54,6 +78,8 @@ Solver::Solver(const model::Model& model) : model_(model) {
   if (!model.rigid_bodies.empty()) rigid_ = std::make_unique<RigidBodies>(model);
   inverse_mass_.resize(n);
   for (std::size_t i = 0; i < n; ++i) inverse_mass_[i] = node_mass_[i] > 0 ? 1.0 / node_mass_[i] : 0.0;
+  parallel_ = model.num_elements() >= kParallelMinElements;
+  build_chunk_dependencies();
   alive_.resize(model.blocks.size());
   chunk_ranges_.resize(model.schedule.chunks.size());
   state_.blocks.resize(model.blocks.size());
@@ -134,6 +160,8 @@ void Solver::build_contributors() {
     for (const auto& e : names) state_.last_balance.terms.push_back({e.key, e.column, e.in_total, 0.0, int(c)});
   }
   energy_scratch_.assign(most, 0.0);
+  phase_times_ = {{"node update", 0}, {"element pass", 0}, {"element checks", 0}};
+  for (const auto& c : contributors_) phase_times_.push_back({c->name(), 0});
 }
 
 const std::vector<contact::PenaltyContact>& Solver::contacts() const {
@@ -166,14 +194,19 @@ void Solver::contributor_forces(double dt) {
   context.time = s.time;
   context.dt = dt;
   using Phase = ForceContributor::Phase;
-  for (auto& c : contributors_)
-    if (c->phase() == Phase::Forces) c->apply(context);
+  auto apply = [&](std::size_t c) {
+    const auto t0 = Clock::now();
+    contributors_[c]->apply(context);
+    if (kFirstContributor + c < phase_times_.size()) phase_times_[kFirstContributor + c].seconds += seconds(t0, Clock::now());
+  };
+  for (std::size_t c = 0; c < contributors_.size(); ++c)
+    if (contributors_[c]->phase() == Phase::Forces) apply(c);
   update_step_bounds();
   context.dt_n1 = 0.5 * (s.dt_prev_half + s.dt_next_half);
   context.dt_next = s.dt_next_half;
   for (const Phase phase : {Phase::Constraints, Phase::Bookkeeping})
-    for (auto& c : contributors_)
-      if (c->phase() == phase) c->apply(context);
+    for (std::size_t c = 0; c < contributors_.size(); ++c)
+      if (contributors_[c]->phase() == phase) apply(c);
 }
 
 void Solver::delete_elements(const std::vector<Index>& ids) {
@@ -254,6 +287,8 @@ void Solver::update_step_bounds() {
 }
 
 void Solver::step() {
+  thread_choice_.before_cycle(state_.cycle);
+  const auto t_start = Clock::now();
   State& s = state_;
   const double dt_half = s.dt_next_half;
   const double dt_n = 0.5 * (s.dt_prev_half + dt_half);
@@ -268,8 +303,7 @@ void Solver::step() {
   double* __restrict f = s.f.data();
   const double* __restrict mass = node_mass_.data();
   const double* __restrict inv_mass = inverse_mass_.data();
-  const bool parallel = model_.num_elements() >= kParallelMinElements;
-#pragma omp parallel for schedule(static) if (parallel)
+#pragma omp parallel for schedule(static) if (parallel_)
   for (long chunk = 0; chunk < num_chunks; ++chunk) {
     const std::size_t begin = std::size_t(chunk) * kNodeChunk, end = std::min(n, begin + kNodeChunk);
     double ke = 0;
@@ -332,11 +366,18 @@ void Solver::step() {
                          << "element can exceed the Courant limit at 0.9), the hourglass QM or the contact stiffness");
 
   s.time += dt_half;
+  const auto t_nodes = Clock::now();
   element_pass(dt_half);
+  const auto t_elements = Clock::now();
   s.dt_prev_half = dt_half;
   ++s.cycle;
   check_after_pass(dt_half);
+  const auto t_checks = Clock::now();
   contributor_forces(dt_half);
+  phase_times_[kNodeUpdate].seconds += seconds(t_start, t_nodes);
+  phase_times_[kElementPass].seconds += seconds(t_nodes, t_elements);
+  phase_times_[kElementChecks].seconds += seconds(t_elements, t_checks);
+  thread_choice_.after_cycle(s.cycle, seconds(t_start, Clock::now()));
 }
 
 void Solver::record_balance(double kinetic, double external_work) {
@@ -368,32 +409,84 @@ void Solver::element_pass(double dt) {
   const double* x = s.x.data();
   const double* v = s.v.data();
   double* f = s.f.data();
-  const bool parallel = model_.num_elements() >= kParallelMinElements;
-#pragma omp parallel if (parallel)
+  const std::uint64_t pass = ++element_passes_;
+  auto run_chunk = [&](int c) {
+    const auto& chunk = schedule.chunks[std::size_t(c)];
+    ChunkResult& result = chunk_results_[std::size_t(c)];
+    result = ChunkResult{};
+    if (alive_[chunk.block].empty()) {
+      update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], chunk.begin, chunk.end, x, v, f, dt,
+                      result);
+    } else {  // elements deleted: the alive ranges of this chunk, in order
+      for (const auto& [begin, end] : chunk_ranges_[std::size_t(c)]) {
+        ChunkResult r;
+        update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], begin, end, x, v, f, dt, r);
+        merge(result, r);
+      }
+    }
+  };
+  const int threads = parallel_ ? omp_get_max_threads() : 1;
+  if (threads == 1) {  // colour by colour: the order the parallel pass reproduces at every node
+    for (const auto& color : schedule.colors)
+      for (int c : color) run_chunk(c);
+    return;
+  }
+  // Each thread owns a contiguous range of chunks (the part of the mesh its static node update
+  // touches, so its data stays in its cache) and runs them colour by colour; before a chunk it
+  // waits until the chunks of lower colour that share a node with it are done. Every node then
+  // receives its forces in colour order, as in the one-thread pass, without a barrier per colour
+  // (a colour with a single chunk no longer idles the other threads). No deadlock: a thread waits
+  // only for lower colours, which their owners reach first.
+#pragma omp parallel num_threads(threads)
   {
+    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
+    const int num_chunks = int(schedule.chunks.size());
+    const int lo = int(std::int64_t(num_chunks) * t / nt), hi = int(std::int64_t(num_chunks) * (t + 1) / nt);
     for (const auto& color : schedule.colors) {
-      // Static: a thread gets the same chunks every cycle, and (chunks being in element order)
-      // the same region of the mesh the static node update gives it, so its node and element data
-      // stay in its own cache. Dynamic scheduling moved them between the cores every colour and
-      // cost 1.35 instead of 1.7-1.96 speed-up on 2 threads at 10^5 elements (BENCHMARKS.md).
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < color.size(); ++i) {
-        const int c = color[i];
-        const auto& chunk = schedule.chunks[c];
-        chunk_results_[c] = ChunkResult{};
-        if (alive_[chunk.block].empty()) {
-          update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], chunk.begin, chunk.end, x, v, f,
-                          dt, chunk_results_[c]);
-        } else {  // elements deleted: the alive ranges of this chunk, in order
-          for (const auto& [begin, end] : chunk_ranges_[c]) {
-            ChunkResult r;
-            update_elements(model_, model_.blocks[chunk.block], s.blocks[chunk.block], begin, end, x, v, f, dt, r);
-            merge(chunk_results_[c], r);
-          }
-        }
+      auto it = std::lower_bound(color.begin(), color.end(), lo);
+      for (; it != color.end() && *it < hi; ++it) {
+        const int c = *it;
+        for (Index p = chunk_preds_start_[std::size_t(c)]; p < chunk_preds_start_[std::size_t(c) + 1]; ++p)
+          wait_for_pass(chunk_done_[std::size_t(chunk_preds_[std::size_t(p)])], pass);
+        run_chunk(c);
+        __atomic_store_n(&chunk_done_[std::size_t(c)], pass, __ATOMIC_RELEASE);
       }
     }
   }
+}
+
+void Solver::build_chunk_dependencies() {
+  // Chunk c depends on every chunk of lower colour that shares a node with it.
+  const auto& schedule = model_.schedule;
+  const std::size_t num_chunks = schedule.chunks.size();
+  std::vector<int> color(num_chunks, 0);
+  for (std::size_t k = 0; k < schedule.colors.size(); ++k)
+    for (int c : schedule.colors[k]) color[std::size_t(c)] = int(k);
+  std::vector<std::vector<int>> node_chunks(model_.num_nodes());
+  for (std::size_t c = 0; c < num_chunks; ++c) {
+    const auto& ch = schedule.chunks[c];
+    const auto& conn = model_.blocks[ch.block].conn;
+    for (Index e = ch.begin; e < ch.end; ++e)
+      for (int k = 0; k < 8; ++k) {
+        auto& list = node_chunks[std::size_t(conn[8 * std::size_t(e) + k])];
+        if (list.empty() || list.back() != int(c)) list.push_back(int(c));
+      }
+  }
+  std::vector<std::vector<int>> preds(num_chunks);
+  for (const auto& list : node_chunks)
+    for (int a : list)
+      for (int b : list)
+        if (color[std::size_t(b)] < color[std::size_t(a)]) preds[std::size_t(a)].push_back(b);
+  chunk_preds_start_.assign(num_chunks + 1, 0);
+  chunk_preds_.clear();
+  for (std::size_t c = 0; c < num_chunks; ++c) {
+    auto& p = preds[c];
+    std::sort(p.begin(), p.end());
+    p.erase(std::unique(p.begin(), p.end()), p.end());
+    chunk_preds_.insert(chunk_preds_.end(), p.begin(), p.end());
+    chunk_preds_start_[c + 1] = Index(chunk_preds_.size());
+  }
+  chunk_done_.assign(num_chunks, 0);
 }
 
 void Solver::check_after_pass(double dt_used) {
@@ -521,7 +614,8 @@ void Solver::mark_crashfront(const std::vector<Index>& eroded) {
 }
 
 int Solver::threads_used() const {
-  return model_.num_elements() >= kParallelMinElements ? omp_get_max_threads() : 1;
+  if (thread_choice_.enabled()) return thread_choice_.chosen();
+  return parallel_ ? omp_get_max_threads() : 1;
 }
 
 std::string Solver::part_of_element(Index id) const {

@@ -23,6 +23,7 @@
 #include "solver/rigid_body.hpp"
 #include "solver/rigid_walls.hpp"
 #include "solver/state.hpp"
+#include "solver/thread_choice.hpp"
 
 namespace plyimpact::solver {
 
@@ -52,6 +53,18 @@ class Solver {
 
   // OpenMP threads the cycle actually uses (1 below the size where a parallel pass pays off).
   int threads_used() const;
+  // Let the solver pick one or all OpenMP threads by timing both now and then (ThreadChoice); for
+  // runs whose thread count the user left open. Off by default: the current count is used.
+  void choose_threads_by_timing(bool on) { thread_choice_.enable(on && parallel_); }
+
+  // Wall seconds spent in each part of the cycle since construction (profiling; a few clock reads
+  // per cycle). Names: "node update", "element pass", "element checks" (sums, erosion, crashfront)
+  // and each contributor's name().
+  struct PhaseTime {
+    std::string name;
+    double seconds = 0;
+  };
+  const std::vector<PhaseTime>& phase_times() const { return phase_times_; }
 
   // Name of the part that owns element `id` (1-based), for messages.
   std::string part_of_element(Index id) const;
@@ -78,6 +91,8 @@ class Solver {
 
  private:
   void element_pass(double dt);
+  // chunk_preds_ from the schedule (the parallel element pass's order constraints).
+  void build_chunk_dependencies();
   void check_after_pass(double dt_used);
   void count_erosion(Index id, int cause);
   // Alive ranges of every chunk from alive_ (after a deletion or reading a state).
@@ -101,6 +116,13 @@ class Solver {
   std::vector<double> constraint_work_;    // (num constraints)
   std::vector<double> curve_value_;        // (num curves) value at t^{n+1/2}
   std::vector<ChunkResult> chunk_results_; // (num chunks)
+  bool parallel_ = false;                  // the model is large enough for the parallel passes
+  // Parallel element pass: per chunk (CSR) the chunks of lower colour sharing a node with it, and
+  // the number of the last pass each chunk has finished.
+  std::vector<Index> chunk_preds_start_;
+  std::vector<int> chunk_preds_;
+  std::vector<std::uint64_t> chunk_done_;
+  std::uint64_t element_passes_ = 0;
   std::vector<double> node_chunk_ke_;      // (num node chunks) deterministic kinetic-energy sums
   std::vector<std::vector<int>> set_constraints_;  // per constrained set: constraint indices
   std::vector<double> node_mass_;          // (num_nodes) lumped mass, 0 at rigid-body nodes (their body moves them)
@@ -113,6 +135,8 @@ class Solver {
   std::vector<std::size_t> energy_counts_;  // (num contributors) energies each reports
   std::vector<double> energy_scratch_;     // (max energies of one contributor)
   std::vector<std::string> warnings_;
+  std::vector<PhaseTime> phase_times_;
+  ThreadChoice thread_choice_;  // kNodeUpdate, kElementPass, kElementChecks, then per contributor
   double dt_element_crit_ = 0;              // s, element stable step of the last pass (no TSSFAC)
   // Element deletion: alive[b][e] (empty vector = all alive) and, per chunk, its alive ranges.
   contact::AliveMask alive_;

@@ -1,14 +1,21 @@
 // Determinism: one and two OpenMP threads give bit-identical results (the element schedule fixes
-// the order in which forces are summed at every node, and all reductions run in chunk order).
-// The models are large enough (>= 8192 elements) for the element pass to run in parallel: a
-// cantilevered cross-ply plate, and an impact that brings contact, erosion and a rigid body in.
+// the order in which forces are summed at every node, the contact scatters its springs in node
+// order after its parallel search, interfaces share no node, and all reductions run in a fixed
+// order). Models: a cantilevered cross-ply plate, an impact that brings contact, erosion and a rigid
+// body in, and a small laminate (below the old 8192-element threshold) with all of these and
+// tiebreak interfaces, run through `plyimpact run` so the whole history and final frames compare.
 #include <gtest/gtest.h>
 #include <omp.h>
+#include <unistd.h>
 
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
+#include "app/application.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -106,6 +113,89 @@ void impact_is_bit_identical(int ihq) {
 
 TEST(Threads, ImpactWithContactErosionAndRigidBodyIsBitIdentical) { impact_is_bit_identical(4); }
 TEST(Threads, ImpactWithAssumedStrainHourglassIsBitIdentical) { impact_is_bit_identical(6); }
+namespace fs = std::filesystem;
+
+std::string file_bytes(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The last value of a history.csv column.
+double last_value(const std::string& csv, const std::string& column) {
+  std::istringstream in(csv);
+  std::string header, line, last;
+  std::getline(in, header);
+  while (std::getline(in, line))
+    if (!line.empty()) last = line;
+  std::istringstream h(header), l(last);
+  std::string name, value;
+  while (std::getline(h, name, ',') && std::getline(l, value, ','))
+    if (name == column) return std::stod(value);
+  ADD_FAILURE() << "no column " << column;
+  return 0;
+}
+
+// A [0/90]s laminate of *MAT_054 plies (1600 elements: below the 8192 elements from which the
+// solver used to go parallel) with tiebreak (OPTION 9) on its two angle-change interfaces and a
+// bonded middle interface, struck by a rigid hemispherical tup through eroding contact; strains to
+// failure and interface strengths set low so that within 414 cycles elements erode and the
+// interfaces dissipate energy. The whole history and every frame (plies, tup, interfaces) of one and
+// two threads must be the same bytes.
+TEST(Threads, SmallLaminateImpactRunIsBitIdentical) {
+  const char* scene =
+      "units: mm-t-s-MPa\ncontrol: {termination_time: 8.0e-6}\noutput: {interval: 4.0e-6, history_interval: 1.0e-7}\n"
+      "materials:\n"
+      "  ply: {card: MAT_054, RO: 1550 kg/m^3, EA: 157 GPa, EB: 8.5 GPa, EC: 8.5 GPa, PRBA: 0.01895, PRCA: 0.01895,\n"
+      "        PRCB: 0.53, GAB: 4.2 GPa, GBC: 2.2 GPa, GCA: 4.2 GPa, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0],\n"
+      "        XT: 2.2 GPa, XC: 1.2 GPa, YT: 0.045 GPa, YC: 0.28 GPa, SC: 0.045 GPa, SOFT: 1, CRIT: 54, BETA: 1,\n"
+      "        DFAILT: 0.003, DFAILC: -0.003, DFAILM: 0.003, DFAILS: 0.003}\n"
+      "  steel: {card: MAT_001, RO: 7857 kg/m^3, E: 206.7 GPa, PR: 0.3}\n"
+      "sections:\n  ply: {ELFORM: 1, IHQ: 2, QM: 0.1}\n"
+      "laminate:\n  length: 20\n  width: 20\n  ply_thickness: 0.25\n  stacking: \"[0/90]s\"\n  material: ply\n"
+      "  section: ply\n  element_size: 1\n"
+      "  interfaces: {select: angle-change, model: tiebreak, OPTION: 9, NFLS: 20 MPa, SFLS: 20 MPa, PARAM: 1,\n"
+      "               ERATEN: 200 J/m^2, ERATES: 300 J/m^2, CT2CN: 1, CN: 100 kN/mm^3}\n"
+      "  supports:\n    window: {window: [16, 16]}\n"
+      "impactor: {shape: hemispherical_cylinder, diameter: 6, length: 6, mass: 0.05 kg, gap: 0.001, velocity: 30 m/s,\n"
+      "           element_size: 1, rigid: true, material: steel}\n"
+      "contacts:\n  - {name: tup_plies, type: eroding_surface_to_surface, SOFT: 1,\n"
+      "     surfaces: [impactor, [ply_1_0, ply_2_90, ply_3_90, ply_4_0]]}\n";
+  const fs::path dir = fs::temp_directory_path() / ("plyimpact_threads_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "small_impact.yaml") << scene;
+  auto run = [&](int threads) {
+    const fs::path out = dir / ("threads_" + std::to_string(threads));
+    std::ostringstream o, e;
+    const int code = app::run_application(
+        {"run", (dir / "small_impact.yaml").string(), "--threads", std::to_string(threads), "-o", out.string()}, o, e);
+    EXPECT_EQ(0, code) << e.str() << o.str();
+    return out;
+  };
+  const fs::path one = run(1), two = run(2);
+  const std::string summary = file_bytes(two / "summary.json");
+  EXPECT_NE(summary.find("\"threads\": 2"), std::string::npos) << "the 2-thread run did not run on 2 threads";
+  EXPECT_NE(summary.find("\"elements\": 1600"), std::string::npos) << summary.substr(0, 400);
+  const std::string history = file_bytes(one / "history.csv");
+  // The run must exercise what it claims to: contact force, erosion, interface damage, the body slowed.
+  EXPECT_GT(last_value(history, "contact_tup_plies_normal"), 0.0);
+  EXPECT_GT(last_value(history, "interface_dissipated_energy"), 0.0);
+  EXPECT_GT(last_value(history, "rigid_impactor_vz"), -30.0);
+  EXPECT_NE(summary.find("\"eroded_elements\": "), std::string::npos);
+  EXPECT_EQ(summary.find("\"eroded_elements\": 0,"), std::string::npos) << "no element eroded";
+  EXPECT_EQ(history, file_bytes(two / "history.csv"));
+  int frames = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(one)) {
+    const fs::path rel = fs::relative(entry.path(), one);
+    if (!entry.is_regular_file() || entry.path().extension() != ".vtu") continue;
+    ++frames;
+    EXPECT_EQ(file_bytes(entry.path()), file_bytes(two / rel)) << rel;
+  }
+  EXPECT_GE(frames, 6) << "plies, tup and interfaces at t = 0, 4 and 8 us";
+  fs::remove_all(dir);
+}
 
 }  // namespace
 }  // namespace plyimpact
