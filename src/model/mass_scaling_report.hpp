@@ -21,10 +21,15 @@ struct MassScalingReport {
   bool applied = false;     // true once solver::apply_mass_scaling has run on the model
   double target = 0;        // s, |DT2MS|: the smallest element step (before TSSFAC) after scaling
   std::vector<PartAddedMass> parts;  // deformable parts, in part order
-  double total_mass = 0;    // kg, deformable parts
+  double total_mass = 0;    // kg, the whole model (rigid bodies included: LS-DYNA's ENDMAS basis)
   double total_added = 0;   // kg
   std::vector<std::string> warnings;  // parts above the warning fraction
   double total_fraction() const { return total_mass > 0 ? total_added / total_mass : 0.0; }
+  double deformable_mass() const {
+    double m = 0;
+    for (const auto& p : parts) m += p.mass;
+    return m;
+  }
 };
 
 }  // namespace plyimpact::model

@@ -43,6 +43,7 @@ output::Json mass_scaling_json(const model::Model& model) {
   j["dt2ms"] = model.control.dt2ms;
   j["target_element_step"] = r.target;
   j["total_mass"] = r.total_mass;
+  j["deformable_mass"] = r.deformable_mass();
   j["added_mass"] = r.total_added;
   j["added_fraction"] = r.total_fraction();
   output::Json parts = output::Json::array();
@@ -56,7 +57,7 @@ output::Json mass_scaling_json(const model::Model& model) {
     parts.push_back(e);
   }
   j["parts"] = parts;
-  j["units"] = "s, kg; fractions of the model's or the part's mass";
+  j["units"] = "s, kg; added_fraction: of the whole model's mass (rigid bodies included), per part: of the part's";
   return j;
 }
 

@@ -92,8 +92,9 @@ std::vector<std::string> mass_scaling_lines(const Solver& solver) {
   char buf[320];
   std::snprintf(buf, sizeof buf,
                 "mass scaling (DT2MS %.4g s): target element step %.4g s (step %.4g s with TSSFAC), added "
-                "%.6g kg = %s of the model's %.6g kg, once at the start",
+                "%.6g kg once at the start = %s of the deformable parts' %.6g kg, %s of the model's %.6g kg",
                 model.control.dt2ms, r.target, model.control.tssfac * r.target, r.total_added,
+                percent(r.total_added / r.deformable_mass()).c_str(), r.deformable_mass(),
                 percent(r.total_fraction()).c_str(), r.total_mass);
   lines.push_back(buf);
   for (const auto& p : r.parts) {

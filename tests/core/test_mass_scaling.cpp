@@ -4,15 +4,14 @@
 // have dt_e = L / c, L = V / A_max, exactly) and against the sum of the nodal mass changes; (2) the
 // step the solver takes; (3) the kinetic energy of the added mass at t = 0 against 1/2 (M + dM) v^2
 // and the energy balance through an impact; (4) a bar's wave speed against c sqrt(m0 / (m0 + dm));
-// (5) one and two threads bit-identical with contact, erosion and a rigid body.
-// The restart with mass scaling is in test_restart.cpp (its bit-for-bit harness).
+// (5) one and two threads bit-identical with contact, erosion and a rigid body (test_threads.cpp,
+// MassScaledImpactIsBitIdentical) and the restart (test_restart.cpp, MassScaledBarContinuesBitForBit),
+// each in that file's bit-for-bit harness.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <cmath>
 #include <cstring>
 #include <iostream>
-#include <memory>
 #include <sstream>
 #include <string>
 
@@ -246,49 +245,6 @@ TEST(MassScaling, BarWaveSpeedDropsBySqrtOfTheMassRatio) {
   std::cout << "bar: front " << measured << " m/s, c sqrt(m0/(m0+dm)) = " << c_scaled << " m/s (unscaled c " << c
             << "), error " << (measured - U) / U << "\n";
   EXPECT_LT(std::abs(measured - U) / U, 0.25 * kH / (x2 - x1));
-}
-
-// (5) The impact of test_threads.cpp (rigid block on an eroding *MAT_054 plate, >= 8192 elements
-// so the element pass runs in parallel) with the plate scaled from 4.9e-8 s to 6e-8 s.
-TEST(MassScaling, OneAndTwoThreadsAreBitIdentical) {
-  const std::string yaml =
-      "units: SI\ncontrol: {termination_time: 1, dt2ms: -6e-8}\nmaterials:\n"
-      "  ply: {card: MAT_054, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.019, PRCA: 0.019, PRCB: 0.53,"
-      " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0], XT: 2.0e9, XC: 1.2e9,"
-      " YT: 50e6, YC: 200e6, SC: 70e6, DFAILT: 0.004, DFAILC: -0.004, DFAILM: 0.004, DFAILS: 0.004}\n"
-      "  rig: {card: MAT_020, RO: 7850, E: 210e9, PR: 0.3}\n"
-      "sections:\n  s: {ELFORM: 1, IHQ: 4}\n"
-      "parts:\n  plate: {material: ply, section: s}\n  block: {material: rig, section: s}\n"
-      "mesh:\n  merge_nodes: false\n  boxes:\n"
-      "    - {part: plate, origin: [-0.016, -0.016, -0.002], size: [0.032, 0.032, 0.002], elements: [64, 64, 2]}\n"
-      "    - {part: block, origin: [-0.002, -0.002, 5.0e-5], size: [0.004, 0.004, 0.002], elements: [8, 8, 4]}\n"
-      "node_sets:\n  edge: {plane: {axis: x, value: -0.016}}\n"
-      "boundary_conditions:\n  - {node_set: edge, fix: [x, y, z]}\n"
-      "initial_velocity:\n  - {part: block, velocity: [3, 1, -150]}\n"
-      "contacts:\n  - {name: impact, type: eroding_surface_to_surface, surfaces: [block, plate], SOFT: 1}\n";
-  const model::Model model = test::model_from_yaml(yaml, "threads_scaled.yaml");
-  ASSERT_GE(model.num_elements(), 8192u);
-  ASSERT_GT(part_named(model, "plate").scaled_elements, 0);
-  auto run = [&](int threads) {
-    omp_set_num_threads(threads);
-    auto s = std::make_unique<solver::Solver>(model);
-    for (int i = 0; i < 150; ++i) s->step();
-    return s;
-  };
-  const auto a = run(1);
-  const auto b = run(2);
-  long eroded = 0;
-  for (std::size_t e = 0; e < model.blocks[0].size(); ++e) eroded += a->element_alive(0, Index(e)) ? 0 : 1;
-  ASSERT_GT(eroded, 0) << "no erosion: the run does not exercise it";
-  const auto& sa = a->state();
-  const auto& sb = b->state();
-  EXPECT_EQ(0, std::memcmp(sa.x.data(), sb.x.data(), sa.x.size() * sizeof(double)));
-  EXPECT_EQ(0, std::memcmp(sa.v.data(), sb.v.data(), sa.v.size() * sizeof(double)));
-  for (std::size_t blk = 0; blk < sa.blocks.size(); ++blk)
-    EXPECT_EQ(0, std::memcmp(sa.blocks[blk].stress.data(), sb.blocks[blk].stress.data(),
-                             sa.blocks[blk].stress.size() * sizeof(double)));
-  EXPECT_EQ(a->balance().total(), b->balance().total());
-  EXPECT_EQ(sa.dt_next_half, sb.dt_next_half);
 }
 
 }  // namespace
