@@ -7,7 +7,6 @@
 
 #include "core/error.hpp"
 #include "material/composite_damage.hpp"
-#include "solver/assumed_strain_hourglass.hpp"
 #include "solver/contributors.hpp"
 
 namespace plyimpact::solver {
