@@ -20,6 +20,7 @@
 #include "run/cycle_budget.hpp"
 #include "run/run.hpp"
 #include "solver/contributors.hpp"
+#include "solver/mass_scaling.hpp"
 #include "solver/solver.hpp"
 
 namespace plyimpact::app {
@@ -72,6 +73,7 @@ Loaded load(const std::string& path, const Overrides& overrides, bool for_a_run 
   l.scene = config::load_scene(path, overrides);
   l.mesh = mesh::mesh_scene(l.scene);
   l.model = model::build_model(l.scene, l.mesh);
+  solver::apply_mass_scaling(l.model);  // control.dt2ms: before the cycle estimate, which uses the step
   if (for_a_run) run::require_cycle_budget(l.scene, l.model, run::estimate_cycles(l.model));
   return l;
 }
@@ -186,6 +188,7 @@ int check(const std::string& path, const Overrides& overrides, std::ostream& out
       out << buf;
     }
   }
+  for (const auto& line : solver::mass_scaling_lines(solver)) out << "  " << line << "\n";
   for (const auto& w : solver.warnings()) out << "  warning: " << w << "\n";
   if (st.dt_contact_controls)
     std::snprintf(buf, sizeof buf,

@@ -184,6 +184,10 @@ struct InitialVelocitySpec {
 struct ControlSpec {
   double termination_time = 0;  // s (required)
   double tssfac = 0.9;          // *CONTROL_TIMESTEP TSSFAC
+  // *CONTROL_TIMESTEP DT2MS, s: negative = mass scaling, elements whose stable step is below
+  // |DT2MS| get mass so that it equals |DT2MS| (solver/mass_scaling); 0 = off.
+  double dt2ms = 0;
+  double endmas = 0;            // *CONTROL_TERMINATION ENDMAS, %: refuse more added mass than this; 0 = off
   double dt_min_ratio = 1e-3;   // stop if dt < dt_min_ratio * dt0
   double erode_tsmin = 0;       // s: erode elements whose step falls below it (ERODE=1 with TSMIN); 0 = off
   double energy_ratio_limit = 1.5;  // stop if the energy ratio exceeds it (energy is being created); 0 = off

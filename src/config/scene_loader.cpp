@@ -36,10 +36,24 @@ std::string fmt(double v) { return msg() << v; }
 
 // ---------------------------------------------------------------- control / output
 
+// *CONTROL_TIMESTEP DT2MS with LS-DYNA's sign: negative, |DT2MS| the element step mass scaling
+// keeps (docs/theory.md, "Mass scaling"). Positive DT2MS (LS-DYNA also removes mass from elements
+// above the target, for quasi-static runs) is refused, as is a target longer than the run.
+void read_mass_scaling(const Reader& r, ControlSpec& c) {
+  c.dt2ms = r.quantity_or("dt2ms", u::time, 0.0,
+                          Limits::interval(-c.termination_time, false, 0, false,
+                                           "dt2ms (negative: |DT2MS| is the target element step, at most "
+                                           "termination_time; positive DT2MS, uniform scaling, is not supported)"));
+  c.endmas = r.quantity_or("endmas", u::dimensionless, 0.0,
+                           Limits::interval(0, false, 1e4, false, "endmas (percent of the deformable mass)"));
+  if (c.endmas > 0 && c.dt2ms == 0)
+    r.at("endmas", "").fail("endmas limits the mass added by mass scaling, which is off", "dt2ms < 0 together with endmas");
+}
+
 ControlSpec read_control(const Reader& r) {
   r.require_map("a mapping with termination_time and optional tssfac, dt_min_ratio, ...");
   r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "energy_ratio_limit", "erode_tsmin",
-                "hourglass_warn_ratio", "max_cycles", "max_elements", "cycle_limit", "threads"});
+                "hourglass_warn_ratio", "max_cycles", "max_elements", "cycle_limit", "threads", "dt2ms", "endmas"});
   ControlSpec c;
   c.termination_time = r.quantity("termination_time", u::time, Limits::positive("termination time"));
   c.tssfac = r.quantity_or("tssfac", u::dimensionless, c.tssfac, Limits::interval(0, true, 1, false, "tssfac"));
@@ -54,6 +68,7 @@ ControlSpec read_control(const Reader& r) {
   c.max_elements = r.integer_or("max_elements", c.max_elements, Limits::at_least(1, "max_elements"));
   c.cycle_limit = r.integer_or("cycle_limit", c.cycle_limit, Limits::at_least(1, "cycle_limit"));
   c.threads = static_cast<int>(r.integer_or("threads", c.threads, Limits::interval(0, false, 4096, false, "threads")));
+  read_mass_scaling(r, c);
   return c;
 }
 

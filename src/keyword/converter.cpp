@@ -442,7 +442,8 @@ class Converter {
     endcyc_ = f.integer("ENDCYC", 0);
     dtmin_ = f.real("DTMIN", 0);
     f.require_default("ENDENG", 0, "energy change termination");
-    f.require_default("ENDMAS", 0, "mass scaling termination");
+    endmas_ = f.real("ENDMAS", 0);  // percent of the model's mass (control.endmas)
+    if (endmas_ < 0) f.fail("ENDMAS", "allowed: >= 0 (percent of the model's mass added by DT2MS mass scaling)");
     f.require_default("NOSOL", 0, "no-solution run");
     return dtmin_ > 0 ? "control: termination_time, max_cycles, dt_min_ratio = DTMIN"
                       : "control: termination_time, max_cycles (DTMIN blank: the scene's default stop at 1e-3 dt0 stays)";
@@ -459,10 +460,19 @@ class Converter {
     if (!(tssfac_ > 0 && tssfac_ <= 1)) f.fail("TSSFAC", "allowed: in (0, 1]");
     f.require_default("ISDO", 0, "shell step options");
     f.require_default("TSLIMT", 0, "shell minimum step");
-    f.require_default("DT2MS", 0, "mass scaling");
+    // DT2MS < 0: mass scaling to the element step |DT2MS|, which plyimpact applies once at the start
+    // (LS-DYNA's MS1ST 1; with MS1ST 0 LS-DYNA re-evaluates it every cycle). DT2MS > 0 (uniform
+    // scaling that also removes mass) has no counterpart.
+    dt2ms_ = f.real("DT2MS", 0);
+    if (dt2ms_ > 0) f.fail("DT2MS", "allowed: 0 or negative (mass added to elements below the step |DT2MS|)");
     f.require_default("LCTM", 0, "step limit curve");
     f.require_default("ERODE", 0, "erosion at TSMIN");
-    f.require_default("MS1ST", 0, "mass scaling");
+    const int ms1st = int(f.real("MS1ST", 0));
+    if (ms1st != 0 && ms1st != 1) f.fail("MS1ST", "allowed: 0 or 1");
+    if (dt2ms_ < 0)
+      return ms1st == 1 ? "control: tssfac, dt2ms (mass added once at the start, as MS1ST 1)"
+                        : "control: tssfac, dt2ms (mass added once at the start, as MS1ST 1; MS1ST 0 would "
+                          "re-evaluate it every cycle)";
     return "control: tssfac";
   }
 
@@ -1192,6 +1202,8 @@ class Converter {
     y << "units: " << units_.name << "\n";
     y << "control:\n  termination_time: " << num(endtim_) << "\n  tssfac: " << num(tssfac_) << "\n";
     if (dtmin_ > 0) y << "  dt_min_ratio: " << num(dtmin_) << "\n";
+    if (dt2ms_ < 0) y << "  dt2ms: " << num(dt2ms_) << "\n";
+    if (endmas_ > 0 && dt2ms_ < 0) y << "  endmas: " << num(endmas_) << "\n";
     if (endcyc_ > 0) y << "  max_cycles: " << endcyc_ << "\n";
     if (frame_dt_ > 0 || history_dt_ > 0) {
       y << "output:\n";
@@ -1379,7 +1391,7 @@ class Converter {
   std::map<long, Hourglass> hourglass_;
   long control_ihq_ = 2;  // explicit default for solids (see control_hourglass)
   double control_qh_ = 0.1, bulk_q1_ = 1.5, bulk_q2_ = 0.06;
-  double endtim_ = 0, dtmin_ = 0, tssfac_ = 0.9, frame_dt_ = 0, history_dt_ = 0;
+  double endtim_ = 0, dtmin_ = 0, tssfac_ = 0.9, frame_dt_ = 0, history_dt_ = 0, dt2ms_ = 0, endmas_ = 0;
   long endcyc_ = 0;
   std::map<long, Material> materials_;
   std::map<long, Eos> eos_;

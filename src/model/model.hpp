@@ -11,6 +11,7 @@
 
 #include "config/scene.hpp"
 #include "core/types.hpp"
+#include "model/mass_scaling_report.hpp"
 #include "material/composite_damage.hpp"
 #include "material/elastic.hpp"
 #include "material/johnson_cook.hpp"
@@ -82,6 +83,9 @@ struct ElementBlock {
   // reference coordinates and no matrix inverse in the cycle).
   std::vector<double> reference_jacobian_inverse;
   bool rigid = false;  // MAT_020: not in the element schedule; its nodes follow a RigidBody
+  // (num_elements) mass scaling (solver/mass_scaling): the element's step is its computed step
+  // times this factor, sqrt((m + dm) / m) for its added mass dm; empty = no element scaled.
+  std::vector<double> step_scale;
   std::size_t size() const { return element_id.size(); }
   int points() const { return elform == 2 ? 8 : 1; }
   HourglassKind hourglass() const {
@@ -240,6 +244,7 @@ struct Model {
   // segments take the opposite side's stiffness).
   std::vector<Index> impactor_quads;    // (num_quads, 4)
   double impactor_bulk_modulus = 0;
+  MassScalingReport mass_scaling;  // control.dt2ms < 0: what was added (solver::apply_mass_scaling)
 
   std::size_t num_nodes() const { return mass.size(); }
   std::size_t num_elements() const;

@@ -28,7 +28,7 @@ CycleEstimate estimate_cycles(const model::Model& model) {
       for (int n = 0; n < 8; ++n)
         for (int d = 0; d < 3; ++d) x[d][n] = model.X[3 * std::size_t(b.conn[8 * k + n]) + d];
       const double length = element::hex8_volume(x) / element::hex8_max_face_area(x);
-      const double dt = model.control.tssfac * length / c;
+      const double dt = model.control.tssfac * length / c * (b.step_scale.empty() ? 1.0 : b.step_scale[k]);
       if (dt < e.dt) {
         e.dt = dt;
         e.element = long(b.element_id[k]);

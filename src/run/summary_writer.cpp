@@ -36,6 +36,31 @@ output::Json delamination_json(const DelaminationReport& d) {
   return j;
 }
 
+// Mass scaling (control.dt2ms): added mass per part and in total, kg and as a fraction.
+output::Json mass_scaling_json(const model::Model& model) {
+  const model::MassScalingReport& r = model.mass_scaling;
+  output::Json j = output::Json::object();
+  j["dt2ms"] = model.control.dt2ms;
+  j["target_element_step"] = r.target;
+  j["total_mass"] = r.total_mass;
+  j["deformable_mass"] = r.deformable_mass();
+  j["added_mass"] = r.total_added;
+  j["added_fraction"] = r.total_fraction();
+  output::Json parts = output::Json::array();
+  for (const auto& p : r.parts) {
+    output::Json e = output::Json::object();
+    e["part"] = model.parts[p.part].name;
+    e["mass"] = p.mass;
+    e["added_mass"] = p.added;
+    e["added_fraction"] = p.fraction();
+    e["scaled_elements"] = std::int64_t(p.scaled_elements);
+    parts.push_back(e);
+  }
+  j["parts"] = parts;
+  j["units"] = "s, kg; added_fraction: of the whole model's mass (rigid bodies included), per part: of the part's";
+  return j;
+}
+
 }  // namespace
 
 void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
@@ -112,6 +137,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     erosion["by_part_and_cause"] = by_part;
     j["erosion"] = erosion;
   }
+  if (model.mass_scaling.target > 0) j["mass_scaling"] = mass_scaling_json(model);
   if (report.delamination) j["delamination"] = delamination_json(*report.delamination);
   if (report.hourglass) {
     const HourglassVerdict& h = *report.hourglass;

@@ -68,6 +68,8 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
       Qstep[l] = step_q(Le[l], c, trD[l], q1, q2, Qstep[l]);
       dte[l] = element_time_step(Le[l], c, Qstep[l]);
     }
+    if (!blk.step_scale.empty())  // mass scaling (solver/mass_scaling.hpp)
+      for (int l = 0; l < kLanes; ++l) dte[l] *= blk.step_scale[elem[l]];
 
     // Material update.
     alignas(64) double s[6][kLanes], s_old[6][kLanes];

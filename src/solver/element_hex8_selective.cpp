@@ -95,7 +95,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     const double Le = V / element::hex8_max_face_area(xe);  // characteristic length (step, bulk viscosity)
     const double Qstep = step_q(Le, c, trDbar, q1, q2, st.step_q[e]);
     st.step_q[e] = Qstep;
-    const double dte = element_time_step(Le, c, Qstep);
+    const double dte = element_time_step(Le, c, Qstep) * (blk.step_scale.empty() ? 1.0 : blk.step_scale[e]);
     if (dt == 0 && !st.initial_dt.empty()) st.initial_dt[e] = dte;
     if constexpr (Material::kElementRotation) {
       double Wbar[9] = {};

@@ -35,4 +35,13 @@ struct ChunkResult {
 void update_elements(const model::Model& model, const model::ElementBlock& block, BlockState& state, Index begin,
                      Index end, const double* x, const double* v, double* f, double dt, ChunkResult& result);
 
+// The state of block b at t = 0: zero stress, forces and energies, the materials' initial history
+// and axes, the reference volumes.
+BlockState initial_block_state(const model::Model& model, std::size_t b);
+
+// Each element's stable step (no TSSFAC) at the reference geometry, at rest, as the element family
+// computes it (including the block's step_scale, if set), by one element pass at dt = 0 on a
+// scratch state. For mass scaling (solver/mass_scaling), so that the step has one definition.
+std::vector<double> initial_element_steps(const model::Model& model, std::size_t b);
+
 }  // namespace plyimpact::solver

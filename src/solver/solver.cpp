@@ -9,7 +9,6 @@
 
 #include "core/error.hpp"
 #include "material/composite_damage.hpp"
-#include "solver/assumed_strain_hourglass.hpp"
 #include "solver/contributors.hpp"
 
 namespace plyimpact::solver {
@@ -62,6 +61,9 @@ void merge(ChunkResult& total, const ChunkResult& r) {
 }
 
 Solver::Solver(const model::Model& model) : model_(model) {
+  if (model.control.dt2ms != 0 && !model.mass_scaling.applied)
+    throw RunError("control.dt2ms is set but the model's mass was not scaled (solver::apply_mass_scaling)");
+  warnings_ = model.mass_scaling.warnings;
   const std::size_t n = model.num_nodes();
   state_.x = model.X;
   state_.v = model.v0;
@@ -83,31 +85,7 @@ Solver::Solver(const model::Model& model) : model_(model) {
   alive_.resize(model.blocks.size());
   chunk_ranges_.resize(model.schedule.chunks.size());
   state_.blocks.resize(model.blocks.size());
-  for (std::size_t b = 0; b < model.blocks.size(); ++b) {
-    const auto& blk = model.blocks[b];
-    auto& st = state_.blocks[b];
-    st.stress.assign(6 * blk.size() * blk.points(), 0.0);
-    if (blk.hourglass() != model::HourglassKind::None) st.hourglass.assign(12 * blk.size(), 0.0);
-    st.hourglass_moduli = hourglass_moduli(model, blk);
-    st.bulk_q.assign(blk.size(), 0.0);
-    st.step_q.assign(blk.size(), 0.0);
-    st.internal_energy.assign(blk.size(), 0.0);
-    st.hourglass_energy.assign(blk.size(), 0.0);
-    st.volume = blk.volume0;
-    const model::Material& mat = model.materials[blk.material];
-    const int h = mat.history_size();
-    if (h > 0) st.history.assign(std::size_t(h) * blk.size() * blk.points(), 0.0);
-    if (mat.kind == model::MaterialKind::CompositeDamage) {
-      for (std::size_t q = 0; q < blk.size() * blk.points(); ++q)
-        material::composite_damage_init(mat.composite, &st.history[q * std::size_t(h)]);
-      st.axes.resize(9 * blk.size());
-      for (std::size_t e = 0; e < blk.size(); ++e) {
-        const auto& a = model.orientations[blk.orientation[e]].axes;
-        std::copy(a.begin(), a.end(), st.axes.begin() + 9 * e);
-      }
-      st.initial_dt.assign(blk.size(), 0.0);
-    }
-  }
+  for (std::size_t b = 0; b < model.blocks.size(); ++b) state_.blocks[b] = initial_block_state(model, b);
   dof_constraint_.assign(3 * n, -1);
   for (std::size_t c = 0; c < model.constraints.size(); ++c) dof_constraint_[model.constraints[c].dof] = int(c);
   constraint_force_.assign(model.constraints.size(), 0.0);

@@ -1,4 +1,4 @@
-// Test support: build a model from an inline YAML scene and step a solver. Tests state their
+// Test support: build a model from an inline YAML scene (mass-scaled as `run` does) and step a solver. Tests state their
 // physics and tolerances themselves; this only removes boilerplate.
 #pragma once
 
@@ -7,13 +7,16 @@
 #include "config/scene_loader.hpp"
 #include "mesh/mesh.hpp"
 #include "model/model.hpp"
+#include "solver/mass_scaling.hpp"
 #include "solver/solver.hpp"
 
 namespace plyimpact::test {
 
 inline model::Model model_from_yaml(const std::string& yaml, const std::string& label = "inline.yaml") {
   const config::Scene scene = config::load_scene_from_string(yaml, label);
-  return model::build_model(scene, mesh::mesh_boxes(scene));
+  model::Model model = model::build_model(scene, mesh::mesh_boxes(scene));
+  solver::apply_mass_scaling(model);  // control.dt2ms, as the application does after building
+  return model;
 }
 
 // Runs the solver until time t_end (the last step lands on t_end exactly).

@@ -57,9 +57,10 @@ TEST(Threads, OneAndTwoThreadsAreBitIdentical) {
 // triggers, and the rigid body all run on what the parallel element pass produced. The run must
 // really erode elements and move the body, or it would not test their determinism.
 // IHQ 4 and IHQ 6 (the default scene's form): both accumulate hourglass forces per element.
-void impact_is_bit_identical(int ihq) {
+// `control`: extra control keys (mass scaling).
+void expect_impact_bit_identical(int ihq, const std::string& control = "") {
   const std::string yaml =
-      "units: SI\ncontrol: {termination_time: 1}\nmaterials:\n"
+      "units: SI\ncontrol: {termination_time: 1" + control + "}\nmaterials:\n"
       "  ply: {card: MAT_054, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.019, PRCA: 0.019, PRCB: 0.53,"
       " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0], XT: 2.0e9, XC: 1.2e9,"
       " YT: 50e6, YC: 200e6, SC: 70e6, DFAILT: 0.004, DFAILC: -0.004, DFAILM: 0.004, DFAILS: 0.004}\n"
@@ -111,8 +112,8 @@ void impact_is_bit_identical(int ihq) {
   EXPECT_EQ(sa.dt_next_half, sb.dt_next_half);
 }
 
-TEST(Threads, ImpactWithContactErosionAndRigidBodyIsBitIdentical) { impact_is_bit_identical(4); }
-TEST(Threads, ImpactWithAssumedStrainHourglassIsBitIdentical) { impact_is_bit_identical(6); }
+TEST(Threads, ImpactWithContactErosionAndRigidBodyIsBitIdentical) { expect_impact_bit_identical(4); }
+TEST(Threads, ImpactWithAssumedStrainHourglassIsBitIdentical) { expect_impact_bit_identical(6); }
 namespace fs = std::filesystem;
 
 std::string file_bytes(const fs::path& p) {
@@ -196,6 +197,9 @@ TEST(Threads, SmallLaminateImpactRunIsBitIdentical) {
   EXPECT_GE(frames, 6) << "plies, tup and interfaces at t = 0, 4 and 8 us";
   fs::remove_all(dir);
 }
+
+// The first impact with mass scaling (solver/mass_scaling): the plate's 4.9e-8 s elements scaled to 6e-8 s.
+TEST(Threads, MassScaledImpactIsBitIdentical) { expect_impact_bit_identical(4, ", dt2ms: -6e-8"); }
 
 }  // namespace
 }  // namespace plyimpact

@@ -318,7 +318,7 @@ TEST(KeywordRefusals, UnknownKeywordUnsupportedOptionAndFieldValueNameTheLine) {
                                        "*LOAD_BODY_Z\n1,9.81\n"         // 21: unknown keyword
                                        "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR\n1,2,3,3\n"  // 23: option
                                        "*CONTROL_TIMESTEP\n$ dtinit tssfac isdo tslimt dt2ms\n"
-                                       "0.0,0.9,0,0.0,-1.0e-8\n");  // 27: DT2MS (mass scaling) not implemented
+                                       "0.0,0.9,0,0.0,1.0e-8\n");  // 27: DT2MS > 0 (uniform mass scaling)
   EXPECT_TRUE(c.refused());
   const std::string file = (dir / "d.k").string();
   EXPECT_EQ(refusal(c, "LOAD_BODY_Z").rfind(file + ":21: *LOAD_BODY_Z: keyword not implemented", 0), 0u)
@@ -328,7 +328,7 @@ TEST(KeywordRefusals, UnknownKeywordUnsupportedOptionAndFieldValueNameTheLine) {
                               "*CONTACT_AUTOMATIC_SURFACE_TO_SURFACE is not implemented", 0),
             0u)
       << refusal(c, "CONTACT_AUTOMATIC_SURFACE_TO_SURFACE_MORTAR");
-  EXPECT_EQ(refusal(c, "CONTROL_TIMESTEP").rfind(file + ":27: *CONTROL_TIMESTEP: field DT2MS = '-1.0e-8': not supported", 0), 0u)
+  EXPECT_EQ(refusal(c, "CONTROL_TIMESTEP").rfind(file + ":27: *CONTROL_TIMESTEP: field DT2MS = '1.0e-8': allowed: 0 or negative", 0), 0u)
       << refusal(c, "CONTROL_TIMESTEP");
   // The other cards are still reported, as used or mapped.
   for (const auto& e : c.coverage)
@@ -345,6 +345,24 @@ TEST(KeywordRefusals, UnknownKeywordUnsupportedOptionAndFieldValueNameTheLine) {
     EXPECT_NE(what.find(":27: *CONTROL_TIMESTEP"), std::string::npos);
   }
   EXPECT_FALSE(fs::exists(dir / "out.yaml"));
+  fs::remove_all(dir);
+}
+
+// DT2MS < 0 (mass scaling to the element step |DT2MS|) and ENDMAS map onto control.dt2ms and
+// control.endmas, values as on the card (the scene's units line converts them).
+TEST(KeywordParser, MassScalingMapsDt2msAndEndmas) {
+  const fs::path dir = test::scratch_dir();
+  std::string deck = kCube + "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
+                             "*ELEMENT_SOLID\n1,1,1,2,3,4,5,6,7,8\n*CONTROL_TIMESTEP\n0.0,0.9,0,0.0,-2.5e-8,0,0,1\n";
+  deck.replace(deck.find("1.0e-6\n"), 7, "1.0e-6,0,0.0,0.0,5.0\n");  // ENDTIM ... ENDMAS 5 %
+  const auto c = convert_text(dir, deck);
+  ASSERT_FALSE(c.refused()) << keyword::refusals(c);
+  auto value = [&](const std::string& key) {
+    const auto at = c.yaml.find("  " + key + ": ");
+    return at == std::string::npos ? std::nan("") : std::stod(c.yaml.substr(at + key.size() + 4));
+  };
+  EXPECT_EQ(value("dt2ms"), -2.5e-8) << c.yaml;
+  EXPECT_EQ(value("endmas"), 5.0) << c.yaml;
   fs::remove_all(dir);
 }
 
