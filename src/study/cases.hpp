@@ -5,6 +5,7 @@
 // program version, so editing the scene, the study's `set:` or upgrading the program re-runs it.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -20,13 +21,18 @@ struct Case {
   std::vector<std::string> values;               // per parameter, the value text
   std::vector<config::SceneOverride> overrides;  // fixed `set:` first, then the parameters
   std::string hash;                              // 16 hex digits
+  double pass_distance = std::nan("");           // RunRecord::pass_distance, from the loaded scene
 };
 
 /// 64-bit FNV-1a of `text`, as 16 hex digits (a change detector, not a cryptographic hash).
 std::string fnv1a_hex(std::string_view text);
 
-/// Every case of the study, in order (the last parameter varies fastest in a grid).
+/// Every case of the study, in order (the last parameter varies fastest in a grid); none when a
+/// parameter has no values (a ballistic-limit search without a sweep).
 std::vector<Case> expand_cases(const StudySpec& spec, const std::string& scene_text);
+
+/// The case with one value per parameter (the same folder and hash as expand_cases gives it).
+Case make_case(const StudySpec& spec, const std::string& scene_text, const std::vector<ParameterValue>& values);
 
 /// True when `dir` holds the finished run of `c` (see the header comment).
 bool case_finished(const Case& c, const std::filesystem::path& dir);

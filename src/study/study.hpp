@@ -31,6 +31,7 @@ struct StudyOutcome {
   std::size_t cases = 0, already_finished = 0, ran = 0, failed = 0, pending = 0;
   std::filesystem::path dir;
   std::vector<std::string> warnings;
+  std::vector<std::string> errors;  // a ballistic-limit search that ended without a limit, and why
 };
 
 /// Runs (or emits, collects, lists) the study. @throws InputError for an invalid case
