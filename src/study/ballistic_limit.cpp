@@ -45,9 +45,9 @@ void narrow(BallisticLimit& b, const std::vector<Shot>& shots) {
 
 const char* const kPerforationCriterion =
     "perforated: at the end of the run the impactor moves on along the impact direction (residual velocity > 0), "
-    "flies free (its centre-of-mass velocity changed by less than 0.1 % of the impact velocity over the last tenth "
-    "of the run) and its centre of mass has travelled at least gap + plate thickness; stopped: residual velocity "
-    "<= 0; otherwise undecided (the run is too short)";
+    "flies free (its centre-of-mass velocity changed by less than 1 % of the impact velocity over the last tenth "
+    "of the run) and its centre of mass has travelled at least gap + plate thickness; stopped: its velocity along "
+    "the impact direction reached zero at some time (arrested or rebounding); otherwise undecided (the run is too short)";
 
 const char* perforation_name(Perforation p) {
   switch (p) {
@@ -63,8 +63,9 @@ Perforation classify(const RunRecord& r, double pass_distance) {
     throw NotAvailable("not available in this scene: perforation needs a laminate and an impactor (gap + plate thickness)");
   const ImpactorTrack t = impactor_track(r);
   const std::size_t n = t.time.size();
+  // Arrested once, arrested for good: the plate can push a resting impactor back, never through.
+  if (*std::min_element(t.velocity.begin(), t.velocity.end()) <= 0) return Perforation::stopped;
   const double v_end = t.velocity.back();
-  if (v_end <= 0) return Perforation::stopped;
   // Free flight over the last tenth of the run: the centre-of-mass velocity is constant.
   const double t_from = t.time.back() - 0.1 * (t.time.back() - t.time.front());
   double v_min = v_end, v_max = v_end;
@@ -72,7 +73,7 @@ Perforation classify(const RunRecord& r, double pass_distance) {
     v_min = std::min(v_min, t.velocity[i]);
     v_max = std::max(v_max, t.velocity[i]);
   }
-  const bool free_flight = v_max - v_min < 1e-3 * std::abs(t.velocity.front());
+  const bool free_flight = v_max - v_min < 1e-2 * std::abs(t.velocity.front());
   return free_flight && t.travel.back() >= pass_distance ? Perforation::perforated : Perforation::undecided;
 }
 

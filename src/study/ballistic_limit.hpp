@@ -11,9 +11,12 @@
 //   1. the impactor's velocity along the impact direction is positive (residual velocity > 0),
 //   2. its centre of mass has travelled at least `pass_distance` = gap + plate thickness (its
 //      undeformed nose is beyond the rear face of the undeformed plate), and
-//   3. it flies free: its centre-of-mass velocity changed by less than 0.1 % of the impact
-//      velocity over the last tenth of the run (no contact force holds it any more);
-// stopped when the residual velocity is <= 0 (arrested or rebounding); otherwise undecided (still
+//   3. it flies free: its centre-of-mass velocity changed by less than 1 % of the impact
+//      velocity over the last tenth of the run (the plate no longer holds it back: an impactor that
+//      is being arrested loses far more; one that has broken through may still brush debris);
+// stopped when its velocity along the impact direction reached zero at some time (arrested or
+// rebounding: an impactor at rest has no energy left to perforate with, and a plate that springs
+// back and carries it forward again does not make it a perforation); otherwise undecided (still
 // moving forward in contact with the plate: the run is too short to tell), which ends the search
 // with a request for a longer control.termination_time rather than a guess.
 #pragma once

@@ -107,7 +107,11 @@ bool case_finished(const Case& c, const fs::path& dir) {
   try {
     const output::Json record = output::read_json_file(dir / "case.json");
     const output::Json* h = record.find("hash");
-    return h && h->kind() == output::Json::Kind::string && h->as_string() == c.hash;
+    if (!h || h->kind() != output::Json::Kind::string || h->as_string() != c.hash) return false;
+    // A run stopped by a signal (the study or the machine interrupted) is not a result: run it again.
+    const output::Json summary = output::read_json_file(dir / "summary.json");
+    const output::Json* status = summary.find("status");
+    return !(status && status->kind() == output::Json::Kind::string && status->as_string() == "interrupted");
   } catch (const InputError&) {
     return false;  // an unreadable record: run the case again
   }

@@ -1,7 +1,7 @@
 // The cases of a study: the parameter values combined (grid or zip), each case's overrides, its
 // folder name (parameter values + a hash of the effective scene) and its completion record
 // (case.json). A case is finished when its folder holds case.json with the same hash, a
-// summary.json and a history.csv; the hash covers the base scene's text, every override and the
+// summary.json that does not say "interrupted" (a signal ended it) and a history.csv; the hash covers the base scene's text, every override and the
 // program version, so editing the scene, the study's `set:` or upgrading the program re-runs it.
 #pragma once
 

@@ -277,7 +277,7 @@ constexpr QuantityDefinition kQuantities[] = {
     {"residual_velocity", "m/s", "final impactor velocity (a deformable one's centre of mass) along the impact direction (< 0: rebound)",
      residual_velocity},
     {"perforated", "1",
-     "1 when the impactor perforated (moving on, free, nose past the plate's rear face), 0 when it stopped or rebounded",
+     "1 when the impactor perforated (moving on, free, nose past the plate's rear face), 0 when it was arrested",
      perforated},
     {"max_impactor_displacement", "m", "largest rigid-impactor travel along the impact direction",
      max_impactor_displacement},

@@ -125,6 +125,11 @@ TEST(BallisticLimit, PerforationCriterion) {
   EXPECT_EQ(classify(flight(-40, 0.01, true), pass), Perforation::perforated);
   EXPECT_EQ(classify(flight(+5, 0.001, true), pass), Perforation::stopped) << "rebound";
   EXPECT_EQ(classify(flight(0, 0.001, true), pass), Perforation::stopped) << "arrested";
+  RunRecord carried = flight(-3, 0.001, false);  // still pushing into the plate at the end
+  EXPECT_EQ(classify(carried, pass), Perforation::undecided) << "never at rest: the run is too short";
+  carried.history.add_row(std::vector<double>{1.01, 0, 0, 0.0099, 0, 0, 0.5});  // rebounds, then the plate
+  carried.history.add_row(std::vector<double>{1.02, 0, 0, 0.0099, 0, 0, -3});
+  EXPECT_EQ(classify(carried, pass), Perforation::stopped) << "once at rest, arrested whatever follows";
   EXPECT_EQ(classify(flight(-40, 0.01, false), pass), Perforation::undecided) << "still decelerating in the last tenth";
   EXPECT_EQ(classify(flight(-40, 0.001, true), pass), Perforation::undecided) << "nose not yet past the rear face";
   EXPECT_THROW(classify(flight(-40, 0.01, true), std::nan("")), NotAvailable);

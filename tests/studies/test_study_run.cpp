@@ -1,8 +1,8 @@
 // A study of tiny scenes end to end, through child `plyimpact run` processes: the table's rows and
 // columns, reuse of finished cases (a second invocation runs nothing, an extended list runs only
-// the new case), errors that point at the study file's line, the Slurm and GNU parallel hand-off
-// (a line of the emitted job list, run by the shell as a scheduler would, gives a case that
-// --collect then finds), and non-empty PNG plots.
+// the new case, an interrupted case runs again), errors that point at the study file's line, the
+// Slurm and GNU parallel hand-off (a line of the emitted job list, run by the shell as a scheduler
+// would, gives a case that --collect then finds), and non-empty PNG plots.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -78,6 +78,18 @@ TEST(StudyRun, TableReuseAndExtension) {
   EXPECT_EQ(r.ran, 1u) << "only the new value runs";
   EXPECT_EQ(r.already_finished, 2u);
   EXPECT_EQ(lines(slurp(d.path() / "out" / "study.csv")), 4u);
+
+  // A case that a signal interrupted (its summary says so) is not a result: it runs again.
+  for (const auto& e : fs::directory_iterator(d.path() / "out")) {
+    if (!e.path().filename().string().starts_with("tssfac-0.6_")) continue;
+    std::string summary = slurp(e.path() / "summary.json");
+    ASSERT_NE(summary.find("\"completed\""), std::string::npos) << summary;
+    summary.replace(summary.find("\"completed\""), 11, "\"interrupted\"");
+    test::write_file(e.path() / "summary.json", summary);
+  }
+  r = run(d, study_text("[0.9, 0.6, 0.4]"));
+  EXPECT_EQ(r.ran, 1u) << "the interrupted case runs again, the others are reused";
+  EXPECT_EQ(r.already_finished, 2u);
 
   // A changed base scene is a different effective scene: everything runs again.
   test::write_file(d.path() / "block.yaml", std::string(kBlock) + "# edited\n");
