@@ -217,7 +217,11 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o, std::ostrea
     res.failed += search->failed;
     if (!search->error.empty()) res.errors.push_back(search->error);
   }
-  const StudyTable table = gather_table(spec, cases, res.dir, failures);
+  StudyTable table = gather_table(spec, cases, res.dir, failures);
+  if (spec.ballistic_limit)  // the search's cases come in search order: list them by velocity
+    std::stable_sort(table.rows.begin(), table.rows.end(), [](const CaseRow& a, const CaseRow& b) {
+      return leading_number(a.values.front()) < leading_number(b.values.front());
+    });
   for (const auto& r : table.rows) res.pending += r.status == "pending";
   fs::create_directories(res.dir);
   output::write_text_atomically(res.dir / "study.csv", study_csv(table));

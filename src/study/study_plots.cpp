@@ -111,7 +111,7 @@ void plot_residual_velocity(const std::optional<LambertJonasFit>& fit, const std
     plot.series.push_back({"limit", "ballistic limit (mid-point of the bracket)", marks, true});
   }
   plot.title = "residual velocity against impact velocity";
-  plot.x_label = velocity_key;
+  plot.x_label = velocity_key + " (m/s)";
   plot.y_label = "residual velocity (m/s)";
   try_plot(plot, dir / "plots" / "residual_velocity_lambert_jonas.png", log);
 }

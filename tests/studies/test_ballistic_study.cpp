@@ -101,6 +101,16 @@ TEST(BallisticStudy, SearchesResumesAndReports) {
   std::size_t rows = 0;
   for (char c : csv) rows += c == '\n';
   EXPECT_EQ(rows, 1 + f.runs()) << "every case of the search is a row of the study table:\n" << csv;
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);  // header: case,status,impactor.velocity,...
+  double previous = 0;
+  while (std::getline(lines, line)) {
+    const auto first = line.find(',', line.find(',') + 1) + 1;
+    const double v = std::stod(line.substr(first));
+    EXPECT_GT(v, previous) << "rows listed by velocity:\n" << csv;
+    previous = v;
+  }
 
   r = f.run(kSearch);
   EXPECT_EQ(r.ran, 0u) << "a repeated search replays its rounds from the finished cases";
