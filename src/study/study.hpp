@@ -1,9 +1,10 @@
 // `plyimpact study`: validates every case's effective scene in-process (errors name the study
 // file line of the value), skips the cases whose folder already holds a finished run of the same
 // effective scene, runs the others as child processes side by side (total threads <= cores),
-// then writes study.csv, study.json, the convergence and Lambert-Jonas analyses and the plots,
-// all atomically. Alternatively writes the pending cases for Slurm or GNU parallel (emit), or
-// only gathers the finished folders (collect), or only lists the cases (dry run).
+// then runs the ballistic-limit search when the study asks for one (ballistic_study.hpp), and
+// writes study.csv, study.json, the convergence, Lambert-Jonas and ballistic-limit results and
+// the plots, all atomically. Alternatively writes the pending cases for Slurm or GNU parallel
+// (emit), or only gathers the finished folders (collect), or only lists the cases (dry run).
 #pragma once
 
 #include <filesystem>
