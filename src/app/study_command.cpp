@@ -17,7 +17,8 @@ const char* const kStudyUsage =
     "                            finished cases of the same scene; writes study.csv, study.json and plots\n"
     "                            (configs/studies/ has examples). --dry-run lists the cases, --emit\n"
     "                            writes the pending ones as a Slurm job array or GNU parallel job list,\n"
-    "                            --collect gathers the finished case folders into the table\n";
+    "                            --collect gathers the finished case folders into the table; a study with\n"
+    "                            ballistic_limit: then brackets the perforation velocity round by round\n";
 
 namespace {
 
@@ -71,7 +72,7 @@ int study_command(const std::vector<std::string>& args, std::ostream& out, std::
   const study::StudySpec spec = study::read_study(file);
   const study::StudyOutcome r = study::run_study(spec, options, out);
   if (options.dry_run || options.emit != study::Emit::none) return 0;
-  return r.failed > 0 || r.pending > 0 ? 2 : 0;
+  return r.failed > 0 || r.pending > 0 || !r.errors.empty() ? 2 : 0;
 }
 
 }  // namespace plyimpact::app

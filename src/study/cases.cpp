@@ -66,29 +66,37 @@ std::string fnv1a_hex(std::string_view text) {
   return buf;
 }
 
+Case make_case(const StudySpec& spec, const std::string& scene_text, const std::vector<ParameterValue>& values) {
+  Case c;
+  c.overrides = spec.fixed;
+  std::string name;
+  for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
+    const Parameter& par = spec.parameters[p];
+    const ParameterValue& v = values.at(p);
+    c.values.push_back(v.text);
+    c.overrides.push_back({par.key, v.text, v.origin + ": " + par.key + "=" + v.text});
+    if (!name.empty()) name += '_';
+    name += short_key(par.key);
+    name += '-';
+    name += file_safe(v.text);
+  }
+  std::string identity = scene_text;
+  identity += '\0';
+  for (const auto& o : c.overrides) identity += o.key_path + "=" + o.value + '\0';
+  identity += PLYIMPACT_VERSION;
+  c.hash = fnv1a_hex(identity);
+  c.name = name + "_" + c.hash.substr(0, 8);
+  return c;
+}
+
 std::vector<Case> expand_cases(const StudySpec& spec, const std::string& scene_text) {
   std::vector<Case> cases;
+  for (const auto& p : spec.parameters)
+    if (p.values.empty()) return cases;
   for (const auto& idx : combinations(spec)) {
-    Case c;
-    c.overrides = spec.fixed;
-    std::string name;
-    for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
-      const Parameter& par = spec.parameters[p];
-      const ParameterValue& v = par.values[idx[p]];
-      c.values.push_back(v.text);
-      c.overrides.push_back({par.key, v.text, v.origin + ": " + par.key + "=" + v.text});
-      if (!name.empty()) name += '_';
-      name += short_key(par.key);
-      name += '-';
-      name += file_safe(v.text);
-    }
-    std::string identity = scene_text;
-    identity += '\0';
-    for (const auto& o : c.overrides) identity += o.key_path + "=" + o.value + '\0';
-    identity += PLYIMPACT_VERSION;
-    c.hash = fnv1a_hex(identity);
-    c.name = name + "_" + c.hash.substr(0, 8);
-    cases.push_back(std::move(c));
+    std::vector<ParameterValue> values;
+    for (std::size_t p = 0; p < spec.parameters.size(); ++p) values.push_back(spec.parameters[p].values[idx[p]]);
+    cases.push_back(make_case(spec, scene_text, values));
   }
   return cases;
 }
@@ -99,7 +107,11 @@ bool case_finished(const Case& c, const fs::path& dir) {
   try {
     const output::Json record = output::read_json_file(dir / "case.json");
     const output::Json* h = record.find("hash");
-    return h && h->kind() == output::Json::Kind::string && h->as_string() == c.hash;
+    if (!h || h->kind() != output::Json::Kind::string || h->as_string() != c.hash) return false;
+    // A run stopped by a signal (the study or the machine interrupted) is not a result: run it again.
+    const output::Json summary = output::read_json_file(dir / "summary.json");
+    const output::Json* status = summary.find("status");
+    return !(status && status->kind() == output::Json::Kind::string && status->as_string() == "interrupted");
   } catch (const InputError&) {
     return false;  // an unreadable record: run the case again
   }

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "output/json_reader.hpp"
+#include "study/ballistic_limit.hpp"
 
 namespace plyimpact::study {
 namespace {
@@ -160,26 +161,18 @@ Values absorbed_energy(const RunRecord& r) {
   return {{"absorbed_energy", r.history.at(0, k) - r.history.at(rows(r) - 1, k)}};
 }
 
-Values residual_velocity(const RunRecord& r) {
-  require_rows(r);
-  const auto rc = impactor_motion(r);
-  return {{"residual_velocity", dot(row_vec(r, rows(r) - 1, rc.v), impact_direction(r, rc))}};
+Values residual_velocity(const RunRecord& r) { return {{"residual_velocity", impactor_track(r).velocity.back()}}; }
+
+// 1 perforated, 0 stopped; an undecided run has no value (the reason says why).
+Values perforated(const RunRecord& r) {
+  const Perforation p = classify(r, r.pass_distance);
+  if (p == Perforation::undecided)
+    throw NotAvailable("undecided: the impactor still moves forward in contact with the plate at the end of the run "
+                       "(a longer control.termination_time decides it)");
+  return {{"perforated", p == Perforation::perforated ? 1.0 : 0.0}};
 }
 
-// Impactor travel along the impact direction per row.
-std::vector<double> impactor_travel(const RunRecord& r) {
-  require_rows(r);
-  const auto rc = impactor_motion(r);
-  const auto d = impact_direction(r, rc);
-  const auto x0 = row_vec(r, 0, rc.x);
-  std::vector<double> s(rows(r));
-  for (std::size_t i = 0; i < rows(r); ++i) {
-    auto x = row_vec(r, i, rc.x);
-    for (int k = 0; k < 3; ++k) x[k] -= x0[k];
-    s[i] = dot(x, d);
-  }
-  return s;
-}
+std::vector<double> impactor_travel(const RunRecord& r) { return impactor_track(r).travel; }
 
 Values max_impactor_displacement(const RunRecord& r) {
   const auto s = impactor_travel(r);
@@ -190,10 +183,9 @@ Values max_impactor_displacement(const RunRecord& r) {
 // leaves, measured at the impactor. The gap at the start of the run is not subtracted (the scenes
 // start the impactor a stated `gap` away; the table reports travel, the user subtracts the gap).
 Values permanent_indentation(const RunRecord& r) {
-  const auto s = impactor_travel(r);
-  const auto rc = impactor_motion(r);
-  const double v_end = dot(row_vec(r, rows(r) - 1, rc.v), impact_direction(r, rc));
-  if (v_end >= 0)
+  const ImpactorTrack t = impactor_track(r);
+  const auto& s = t.travel;
+  if (t.velocity.back() >= 0)
     throw NotAvailable("not available in this run: the impactor has not rebounded by the termination time");
   return {{"permanent_indentation", s.back()}};
 }
@@ -284,6 +276,9 @@ constexpr QuantityDefinition kQuantities[] = {
      "impactor kinetic energy lost (rigid impactor); else the total kinetic energy lost", absorbed_energy},
     {"residual_velocity", "m/s", "final impactor velocity (a deformable one's centre of mass) along the impact direction (< 0: rebound)",
      residual_velocity},
+    {"perforated", "1",
+     "1 when the impactor perforated (moving on, free, nose past the plate's rear face), 0 when it was arrested",
+     perforated},
     {"max_impactor_displacement", "m", "largest rigid-impactor travel along the impact direction",
      max_impactor_displacement},
     {"permanent_indentation", "m", "final rigid-impactor travel after rebound", permanent_indentation},
@@ -300,6 +295,23 @@ constexpr QuantityDefinition kQuantities[] = {
 };
 
 }  // namespace
+
+ImpactorTrack impactor_track(const RunRecord& r) {
+  require_rows(r);
+  const auto rc = impactor_motion(r);
+  const auto d = impact_direction(r, rc);
+  const auto x0 = row_vec(r, 0, rc.x);
+  const std::size_t time = column(r, "time", "time");
+  ImpactorTrack t;
+  for (std::size_t i = 0; i < rows(r); ++i) {
+    auto x = row_vec(r, i, rc.x);
+    for (int k = 0; k < 3; ++k) x[k] -= x0[k];
+    t.time.push_back(r.history.at(i, time));
+    t.travel.push_back(dot(x, d));
+    t.velocity.push_back(dot(row_vec(r, i, rc.v), d));
+  }
+  return t;
+}
 
 std::span<const QuantityDefinition> quantity_table() { return kQuantities; }
 

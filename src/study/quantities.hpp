@@ -6,6 +6,7 @@
 // reports instead of a number.
 #pragma once
 
+#include <cmath>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -20,7 +21,19 @@ namespace plyimpact::study {
 struct RunRecord {
   output::HistoryTable history{{"time"}};
   output::Json summary;  // summary.json
+  // Travel of the impactor's centre of mass that puts its undeformed nose beyond the rear face of
+  // the undeformed plate (gap + plate thickness, m), from the case's scene; NaN without a laminate
+  // and an impactor. Used by the perforation criterion (ballistic_limit.hpp).
+  double pass_distance = std::nan("");
 };
+
+/// Per history row: time, the impactor's travel and velocity along the impact direction (its
+/// initial velocity), from a rigid impactor's columns or a deformable one's centre of mass.
+/// @throws NotAvailable
+struct ImpactorTrack {
+  std::vector<double> time, travel, velocity;
+};
+ImpactorTrack impactor_track(const RunRecord& r);
 
 struct QuantityValue {
   std::string name;  // the quantity's name, or name_<suffix> for an expanded quantity

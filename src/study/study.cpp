@@ -13,7 +13,8 @@
 #include "core/units.hpp"
 #include "output/atomic_file.hpp"
 #include "output/json.hpp"
-#include "study/case_runner.hpp"
+#include "study/ballistic_study.hpp"
+#include "study/case_batch.hpp"
 #include "study/cases.hpp"
 #include "study/convergence.hpp"
 #include "study/lambert_jonas.hpp"
@@ -80,8 +81,7 @@ output::Json quantity_units(const StudySpec& spec) {
 
 // The Lambert-Jonas fit over the finished cases (velocities converted to m/s with the scene's units).
 std::optional<LambertJonasFit> fit_residual_velocity(const StudySpec& spec, const StudyTable& t,
-                                                     const std::string& unit_system, output::Json& j, PlotLog& plots,
-                                                     const fs::path& dir) {
+                                                     const std::string& unit_system, output::Json& j, PlotLog& plots) {
   std::size_t p = 0;
   while (spec.parameters[p].key != spec.lambert_jonas->velocity_parameter) ++p;
   const units::UnitSystem us = units::parse_unit_system(unit_system);
@@ -89,8 +89,11 @@ std::optional<LambertJonasFit> fit_residual_velocity(const StudySpec& spec, cons
   for (const auto& r : t.rows) {
     const double res = r.quantity("residual_velocity");
     if (std::isnan(res)) continue;
+    const bool undecided = std::any_of(r.notes.begin(), r.notes.end(),
+                                       [](const std::string& n) { return n.starts_with("perforated: undecided"); });
+    if (undecided) continue;  // still moving in contact: neither a residual velocity nor an arrest
     v.push_back(units::quantity_to_si(r.values[p], units::velocity, us));
-    vr.push_back(res);
+    vr.push_back(r.quantity("perforated") == 0 ? 0.0 : res);  // stopped: no residual velocity
   }
   try {
     const LambertJonasFit fit = fit_lambert_jonas(v, vr);
@@ -100,7 +103,6 @@ std::optional<LambertJonasFit> fit_residual_velocity(const StudySpec& spec, cons
     j["rms_residual"] = fit.rms;
     if (std::none_of(vr.begin(), vr.end(), [](double x) { return x <= 0; }))
       j["note"] = "every case perforated: the ballistic limit is an extrapolation below the swept velocities";
-    plot_lambert_jonas(fit, spec.lambert_jonas->velocity_parameter, *std::max_element(v.begin(), v.end()), dir, plots);
     return fit;
   } catch (const InputError& e) {
     j["not_fitted"] = e.what();
@@ -134,11 +136,15 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o, std::ostrea
   StudyOutcome res;
   res.dir = o.output_dir.empty() ? spec.output_dir : o.output_dir;
   const std::string scene_text = slurp(spec.scene);
-  const std::vector<Case> cases = expand_cases(spec, scene_text);
+  std::vector<Case> cases = expand_cases(spec, scene_text);
   res.cases = cases.size();
   // Every case's effective scene must load: refuse the whole study before running anything.
-  std::string unit_system;
-  for (const Case& c : cases) unit_system = config::load_scene(spec.scene.string(), c.overrides).unit_system;
+  std::string unit_system = config::load_scene(spec.scene.string(), spec.fixed).unit_system;
+  for (Case& c : cases) {
+    const config::Scene scene = config::load_scene(spec.scene.string(), c.overrides);
+    unit_system = scene.unit_system;
+    c.pass_distance = plate_pass_distance(scene);
+  }
   std::vector<std::size_t> pending;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     if (case_finished(cases[i], res.dir / cases[i].name)) ++res.already_finished;
@@ -153,6 +159,13 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o, std::ostrea
       out << "  " << (todo ? "pending  " : "finished ") << cases[i].name << ":";
       for (const auto& ov : cases[i].overrides) out << " " << ov.key_path << "=" << ov.value;
       out << "\n";
+    }
+    if (spec.ballistic_limit) {
+      const auto& bl = *spec.ballistic_limit;
+      out << "  then a ballistic-limit search of " << bl.parameter << " in [" << velocity_text(bl, bl.lo) << ", "
+          << velocity_text(bl, bl.hi) << "] to " << velocity_text(bl, bl.tolerance) << ": the two ends, then at most "
+          << int(std::ceil(std::log((bl.hi - bl.lo) / bl.tolerance) / std::log(jobs + 1.0))) << " round(s) of " << jobs
+          << " case(s)\n";
     }
     res.pending = pending.size();
     return res;
@@ -176,34 +189,39 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o, std::ostrea
       out << "wrote " << write_parallel_jobs(res.dir, commands).string() << " (run: parallel -j " << jobs << " < "
           << (res.dir / "parallel_jobs.txt").string() << ", then --collect)\n";
     }
+    if (spec.ballistic_limit)
+      out << "note: the ballistic-limit search chooses each round from the last, so it is not emitted; run the study "
+             "without --emit for it\n";
     res.pending = pending.size();
     return res;
   }
+  const CaseBatch batch{&spec, res.dir, program, jobs, threads};
   if (!o.collect && !pending.empty()) {
     out << "running " << pending.size() << " cases, " << jobs << " at a time, " << threads << " threads each\n";
-    std::vector<CaseJob> list;
-    for (std::size_t i : pending) {
-      const fs::path dir = res.dir / cases[i].name;
-      std::error_code ec;
-      fs::remove(dir / "summary.json", ec);
-      write_case_record(spec, cases[i], dir, "running");
-      list.push_back({cases[i].name, dir, case_arguments(spec, cases[i], dir, threads)});
-    }
-    run_case_processes(program, list, jobs, out, [&](std::size_t k, const CaseOutcome& oc) {
-      const std::size_t i = pending[k];
-      const fs::path dir = res.dir / cases[i].name;
+    std::vector<Case> list;
+    for (std::size_t i : pending) list.push_back(cases[i]);
+    const auto why = run_case_batch(batch, list, out);
+    for (std::size_t k = 0; k < pending.size(); ++k) {
       ++res.ran;
-      // Exit 0 completed, 2 stopped early with its summary written: both are results.
-      if (oc.failure.empty() && (oc.exit_code == 0 || oc.exit_code == 2) && fs::exists(dir / "summary.json")) {
-        write_case_record(spec, cases[i], dir, oc.exit_code == 0 ? "completed" : "stopped");
-      } else {
-        ++res.failed;
-        failures[i] = oc.failure.empty() ? "exit code " + std::to_string(oc.exit_code) : oc.failure;
-        write_case_record(spec, cases[i], dir, "failed: " + failures[i]);
-      }
-    });
+      failures[pending[k]] = why[k];
+      res.failed += !why[k].empty();
+    }
   }
-  const StudyTable table = gather_table(spec, cases, res.dir, failures);
+  std::optional<BallisticStudy> search;
+  if (spec.ballistic_limit && !o.collect) {
+    // One case per core-share: a round of `jobs` velocities cuts the bracket into jobs + 1 parts.
+    const auto [bjobs, bthreads] = share_cores(spec, o, std::size_t(std::max(1, o.jobs)), out);
+    search = run_ballistic_search(spec, scene_text, CaseBatch{&spec, res.dir, program, bjobs, bthreads}, cases,
+                                  failures, out);
+    res.ran += search->ran;
+    res.failed += search->failed;
+    if (!search->error.empty()) res.errors.push_back(search->error);
+  }
+  StudyTable table = gather_table(spec, cases, res.dir, failures);
+  if (spec.ballistic_limit)  // the search's cases come in search order: list them by velocity
+    std::stable_sort(table.rows.begin(), table.rows.end(), [](const CaseRow& a, const CaseRow& b) {
+      return leading_number(a.values.front()) < leading_number(b.values.front());
+    });
   for (const auto& r : table.rows) res.pending += r.status == "pending";
   fs::create_directories(res.dir);
   output::write_text_atomically(res.dir / "study.csv", study_csv(table));
@@ -223,15 +241,34 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o, std::ostrea
     print_convergence(rep, out);
     plot_convergence(rep, res.dir, plots);
   }
+  std::optional<LambertJonasFit> fit;
   if (spec.lambert_jonas) {
     output::Json lj = output::Json::object();
-    if (const auto fit = fit_residual_velocity(spec, table, unit_system, lj, plots, res.dir)) {
+    fit = fit_residual_velocity(spec, table, unit_system, lj, plots);
+    if (fit) {
       char buf[200];
       std::snprintf(buf, sizeof buf, "Lambert-Jonas fit: ballistic limit %.4g m/s, a %.3g, p %.3g (rms %.3g m/s)\n",
                     fit->v_bl, fit->a, fit->p, fit->rms);
       out << buf;
     }
     j["lambert_jonas"] = lj;
+  }
+  std::optional<BallisticLimit> limit;
+  if (spec.ballistic_limit && search) {
+    j["ballistic_limit"] = ballistic_json(*spec.ballistic_limit, *search, unit_system);
+    if (search->result) {
+      limit = search->result;
+      output::write_text_atomically(res.dir / "ballistic_limit.csv", ballistic_csv(*spec.ballistic_limit, *limit));
+    }
+  }
+  if (fit || limit) {
+    const std::string key = spec.lambert_jonas ? spec.lambert_jonas->velocity_parameter : spec.ballistic_limit->parameter;
+    const auto p = std::size_t(std::find(table.parameter_keys.begin(), table.parameter_keys.end(), key) -
+                               table.parameter_keys.begin());
+    double v_max = limit ? limit->hi : 0;
+    for (const auto& r : table.rows)
+      if (!std::isnan(r.quantity("residual_velocity"))) v_max = std::max(v_max, leading_number(r.values[p]));
+    plot_residual_velocity(fit, limit, key, v_max, res.dir, plots);
   }
   output::write_json_atomically(res.dir / "study.json", j);
   plot_quantities(table, res.dir, plots);
@@ -240,6 +277,7 @@ StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o, std::ostrea
       if (r.status == "completed" || r.status == "stopped") plot_case(res.dir / r.name, plots);
   for (const auto& w : plots.warnings) out << "warning: " << w << "\n";
   res.warnings = plots.warnings;
+  for (const auto& e : res.errors) out << "error: " << e << "\n";
   out << "wrote " << (res.dir / "study.csv").string() << ", " << (res.dir / "study.json").string() << " and "
       << plots.written.size() << " plots; " << res.ran << " cases run (" << res.failed << " failed), "
       << res.already_finished << " reused, " << res.pending << " pending\n";

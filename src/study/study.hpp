@@ -1,9 +1,10 @@
 // `plyimpact study`: validates every case's effective scene in-process (errors name the study
 // file line of the value), skips the cases whose folder already holds a finished run of the same
 // effective scene, runs the others as child processes side by side (total threads <= cores),
-// then writes study.csv, study.json, the convergence and Lambert-Jonas analyses and the plots,
-// all atomically. Alternatively writes the pending cases for Slurm or GNU parallel (emit), or
-// only gathers the finished folders (collect), or only lists the cases (dry run).
+// then runs the ballistic-limit search when the study asks for one (ballistic_study.hpp), and
+// writes study.csv, study.json, the convergence, Lambert-Jonas and ballistic-limit results and
+// the plots, all atomically. Alternatively writes the pending cases for Slurm or GNU parallel
+// (emit), or only gathers the finished folders (collect), or only lists the cases (dry run).
 #pragma once
 
 #include <filesystem>
@@ -31,6 +32,7 @@ struct StudyOutcome {
   std::size_t cases = 0, already_finished = 0, ran = 0, failed = 0, pending = 0;
   std::filesystem::path dir;
   std::vector<std::string> warnings;
+  std::vector<std::string> errors;  // a ballistic-limit search that ended without a limit, and why
 };
 
 /// Runs (or emits, collects, lists) the study. @throws InputError for an invalid case

@@ -76,27 +76,42 @@ void plot_convergence(const ConvergenceReport& rep, const fs::path& dir, PlotLog
   }
 }
 
-void plot_lambert_jonas(const LambertJonasFit& fit, const std::string& velocity_key, double v_max, const fs::path& dir,
-                        PlotLog& log) {
-  const double v_hi = 1.05 * v_max;
-  std::string csv = velocity_key + ",residual_velocity_fit\n";
-  for (int i = 0; i <= 200; ++i) {
-    const double v = v_hi * i / 200.0;
-    char line[64];
-    std::snprintf(line, sizeof line, "%.10g,%.10g\n", v, lambert_jonas(fit, v));
-    csv += line;
-  }
-  const fs::path curve = dir / "lambert_jonas_curve.csv";
-  output::write_text_atomically(curve, csv);
+void plot_residual_velocity(const std::optional<LambertJonasFit>& fit, const std::optional<BallisticLimit>& limit,
+                            const std::string& velocity_key, double v_max, const fs::path& dir, PlotLog& log) {
   output::CsvPlot plot;
   plot.csv = dir / "study.csv";
   plot.x_column = velocity_key;
-  char title[160];
-  std::snprintf(title, sizeof title, "Lambert-Jonas fit: a = %.3g, p = %.3g, ballistic limit %.4g m/s", fit.a, fit.p, fit.v_bl);
   plot.series.push_back({"residual_velocity", "computed", {}, true});
-  plot.series.push_back({"residual_velocity_fit", title, curve, false});
+  if (fit) {
+    const double v_hi = 1.05 * v_max;
+    std::string csv = velocity_key + ",residual_velocity_fit\n";
+    for (int i = 0; i <= 200; ++i) {
+      const double v = v_hi * i / 200.0;
+      char line[64];
+      std::snprintf(line, sizeof line, "%.10g,%.10g\n", v, lambert_jonas(*fit, v));
+      csv += line;
+    }
+    const fs::path curve = dir / "lambert_jonas_curve.csv";
+    output::write_text_atomically(curve, csv);
+    char title[160];
+    std::snprintf(title, sizeof title, "Lambert-Jonas fit: a = %.3g, p = %.3g, ballistic limit %.4g m/s", fit->a,
+                  fit->p, fit->v_bl);
+    plot.series.push_back({"residual_velocity_fit", title, curve, false});
+  }
+  if (limit) {
+    char csv[256];
+    std::snprintf(csv, sizeof csv, "%s,bracket,limit\n%.10g,0,\n%.10g,0,0\n%.10g,0,\n", velocity_key.c_str(),
+                  limit->lo, limit->limit, limit->hi);
+    const fs::path marks = dir / "ballistic_limit_bracket.csv";
+    output::write_text_atomically(marks, csv);
+    char title[160];
+    std::snprintf(title, sizeof title, "ballistic limit by bracketing: %.4g +- %.2g (bracket [%.4g, %.4g])",
+                  limit->limit, 0.5 * (limit->hi - limit->lo), limit->lo, limit->hi);
+    plot.series.push_back({"bracket", title, marks, false});
+    plot.series.push_back({"limit", "ballistic limit (mid-point of the bracket)", marks, true});
+  }
   plot.title = "residual velocity against impact velocity";
-  plot.x_label = velocity_key;
+  plot.x_label = velocity_key + " (m/s)";
   plot.y_label = "residual velocity (m/s)";
   try_plot(plot, dir / "plots" / "residual_velocity_lambert_jonas.png", log);
 }

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "study/ballistic_limit.hpp"
 #include "study/convergence.hpp"
 #include "study/lambert_jonas.hpp"
 #include "study/study_table.hpp"
@@ -26,11 +28,14 @@ void plot_quantities(const StudyTable& table, const std::filesystem::path& dir, 
 /// <dir>/plots/convergence_<quantity>.png from <dir>/convergence.csv.
 void plot_convergence(const ConvergenceReport& report, const std::filesystem::path& dir, PlotLog& log);
 
-/// <dir>/lambert_jonas_curve.csv and <dir>/plots/residual_velocity_lambert_jonas.png.
-/// The curve is drawn from 0 to 1.05 v_max (m/s); the computed points come from study.csv, whose
-/// velocity column must then be in m/s (as the fit is).
-void plot_lambert_jonas(const LambertJonasFit& fit, const std::string& velocity_key, double v_max,
-                        const std::filesystem::path& dir, PlotLog& log);
+/// <dir>/plots/residual_velocity_lambert_jonas.png: the computed residual velocities of study.csv,
+/// with the Lambert-Jonas fit when there is one (<dir>/lambert_jonas_curve.csv, drawn from 0 to
+/// 1.05 v_max) and the ballistic-limit bracket when a search found one (<dir>/ballistic_limit_bracket.csv:
+/// the bracket as a segment at zero residual velocity, its mid-point marked). The velocity column of
+/// study.csv must then be in m/s, as the fit is.
+void plot_residual_velocity(const std::optional<LambertJonasFit>& fit, const std::optional<BallisticLimit>& limit,
+                            const std::string& velocity_key, double v_max, const std::filesystem::path& dir,
+                            PlotLog& log);
 
 /// <case_dir>/force_time.png and <case_dir>/energy_time.png from its history.csv.
 void plot_case(const std::filesystem::path& case_dir, PlotLog& log);

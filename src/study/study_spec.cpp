@@ -171,10 +171,42 @@ ConvergenceSpec read_convergence(const Reader& r, const std::vector<Parameter>& 
   return c;
 }
 
+void add_quantity(StudySpec& s, const std::string& name) {
+  if (std::find(s.quantities.begin(), s.quantities.end(), name) == s.quantities.end()) s.quantities.push_back(name);
+}
+
+// ballistic_limit: {parameter, bracket: [lo, hi], unit, tolerance}; the parameter becomes the
+// study's only parameter (with no values when the study does not sweep it).
+BallisticLimitSpec read_ballistic_limit(const Reader& r, const Context& ctx, std::vector<Parameter>& params) {
+  r.allow_keys({"parameter", "bracket", "unit", "tolerance"});
+  BallisticLimitSpec b;
+  b.origin = origin_of(r, ctx) + ": ballistic_limit";
+  const Reader pr = r.at("parameter", "the swept impact velocity key path (impactor.velocity)");
+  b.parameter = pr.as_name();
+  if (params.empty()) params.push_back({b.parameter, {}});
+  if (params.size() != 1 || params.front().key != b.parameter)
+    pr.fail("the ballistic limit is searched with everything else fixed", config::detail::join(keys_of(params)),
+            "parameters: only " + b.parameter + " (a sweep of it), other changes under set:");
+  const Reader br = r.at("bracket", "[lo, hi]: lo stops the impactor, hi perforates");
+  br.require_list("[lo, hi]", true);
+  const auto items = br.items();
+  if (items.size() != 2) br.fail("two values", br.found_text(), "[lo, hi] with 0 <= lo < hi");
+  b.lo = items[0].as_quantity(units::dimensionless, Limits::non_negative("lo"));
+  b.hi = items[1].as_quantity(units::dimensionless, Limits::positive("hi"));
+  if (b.hi <= b.lo) br.fail("lo must be below hi", br.found_text(), "[lo, hi] with lo < hi");
+  if (r.has("unit")) b.unit = r.at("unit", "a unit such as m/s").as_name();
+  const Reader tr = r.at("tolerance", "the bracket width to stop at (same unit)");
+  b.tolerance = tr.as_quantity(units::dimensionless, Limits::positive("tolerance"));
+  if (b.tolerance >= b.hi - b.lo)
+    tr.fail("the tolerance is not below the bracket's width", format_number(b.tolerance),
+            "a tolerance below hi - lo = " + format_number(b.hi - b.lo));
+  return b;
+}
+
 StudySpec read_root(const Reader& root, const Context& ctx, const fs::path& path) {
   root.require_map("a study: a mapping with scene, parameters, quantities ...");
   root.allow_keys({"scene", "set", "parameters", "combine", "quantities", "threads", "output", "convergence",
-                   "lambert_jonas", "case_plots"});
+                   "lambert_jonas", "case_plots", "ballistic_limit"});
   StudySpec s;
   s.file = path;
   s.name = path.stem().string();
@@ -183,7 +215,11 @@ StudySpec read_root(const Reader& root, const Context& ctx, const fs::path& path
   if (!fs::exists(s.scene)) scene.fail("the scene file does not exist", s.scene.string(), "a path to a scene YAML file");
   s.output_dir = root.has("output") ? fs::path(root.at("output", "").as_name()) : fs::path("results/studies") / s.name;
   if (const auto f = root.find("set")) s.fixed = read_fixed(*f, ctx);
-  s.parameters = read_parameters(root.at("parameters", "the scene values to vary"), ctx);
+  if (!root.has("parameters") && root.has("ballistic_limit")) {
+    // The search's own cases only.
+  } else {
+    s.parameters = read_parameters(root.at("parameters", "the scene values to vary"), ctx);
+  }
   if (root.has("combine")) {
     const Reader c = root.at("combine", "");
     s.combine = c.as_choice({"grid", "zip"}) == "zip" ? Combine::zip : Combine::grid;
@@ -194,6 +230,11 @@ StudySpec read_root(const Reader& root, const Context& ctx, const fs::path& path
                  msg() << s.parameters.front().values.size() << " values, as " << s.parameters.front().key);
   }
   s.quantities = read_quantities(root.at("quantities", "the quantities to extract"));
+  if (const auto bl = root.find("ballistic_limit")) {
+    s.ballistic_limit = read_ballistic_limit(*bl, ctx, s.parameters);
+    add_quantity(s, "residual_velocity");
+    add_quantity(s, "perforated");
+  }
   s.threads = int(root.integer_or("threads", 0, Limits::non_negative("threads")));
   if (const auto cp = root.find("case_plots")) s.case_plots = cp->as_choice({"true", "false"}) == "true";
   if (const auto c = root.find("convergence")) {
@@ -215,6 +256,7 @@ StudySpec read_root(const Reader& root, const Context& ctx, const fs::path& path
     for (const auto& q : s.quantities) has_residual |= q == "residual_velocity";
     if (!has_residual) lj->fail("the fit needs the residual velocity", "quantities without residual_velocity",
                                 "residual_velocity in quantities");
+    add_quantity(s, "perforated");  // the fit counts a stopped impactor as 0 and leaves undecided runs out
   }
   return s;
 }

@@ -15,6 +15,7 @@
 //   convergence: {parameter: laminate.refinement_level, h: refinement_level,
 //                 reference: {peak_contact_force: 1.2e4}, order_band: [0.5, 4]}
 //   lambert_jonas: {velocity: impactor.velocity}
+//   ballistic_limit: {parameter: impactor.velocity, bracket: [100, 300], unit: m/s, tolerance: 5}
 //   case_plots: true                             # force-time and energy-time PNG per case
 //
 // Every problem is an InputError naming study-file:line:col and the key (config/yaml_reader.hpp).
@@ -61,6 +62,16 @@ struct LambertJonasSpec {
   std::string velocity_parameter;  // the swept impact velocity
 };
 
+// Ballistic limit by bracketing (ballistic_limit.hpp); bracket and tolerance in `unit`. The
+// parameter is the study's only one (its listed values, if any, are a sweep whose finished cases
+// narrow the bracket) and `parameters:` may be left out.
+struct BallisticLimitSpec {
+  std::string parameter;
+  double lo = 0, hi = 0, tolerance = 0;
+  std::string unit;    // "" or a unit the scene accepts for the parameter ("m/s")
+  std::string origin;  // "study.yaml:12:18: ballistic_limit" for messages
+};
+
 struct StudySpec {
   std::filesystem::path file;   // the study file
   std::string name;             // its stem
@@ -74,6 +85,7 @@ struct StudySpec {
   bool case_plots = false;
   std::optional<ConvergenceSpec> convergence;
   std::optional<LambertJonasSpec> lambert_jonas;
+  std::optional<BallisticLimitSpec> ballistic_limit;
 };
 
 /// Reads and validates a study file. @throws InputError (file:line:col: key: what; found; allowed)

@@ -34,7 +34,8 @@ StudyTable gather_table(const StudySpec& spec, const std::vector<Case>& cases, c
     } else if (case_finished(c, case_dir)) {
       row.status = "finished";
       try {
-        const RunRecord record = read_run_record(case_dir.string());
+        RunRecord record = read_run_record(case_dir.string());
+        record.pass_distance = c.pass_distance;
         if (const auto* s = record.summary.find("status"); s && s->kind() == output::Json::Kind::string)
           row.status = s->as_string();  // "completed" or "stopped"
         for (const auto& name : spec.quantities) {

@@ -59,9 +59,9 @@ double arrival_time(const std::filesystem::path& history, double c) {
 }
 
 TEST(BarConvergence, RichardsonOnTheWaveArrival) {
-  test::StudyDir d;
-  d.write("bar.yaml", kBar);
-  const auto file = d.write("bar_study.yaml", kStudy);
+  test::ScratchDir d;
+  test::write_file(d.path() / "bar.yaml", kBar);
+  const auto file = test::write_file(d.path() / "bar_study.yaml", kStudy);
   StudyOptions o;
   o.program = test::kProgram;
   o.output_dir = d.path() / "out";

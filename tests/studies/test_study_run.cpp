@@ -1,8 +1,8 @@
 // A study of tiny scenes end to end, through child `plyimpact run` processes: the table's rows and
 // columns, reuse of finished cases (a second invocation runs nothing, an extended list runs only
-// the new case), errors that point at the study file's line, the Slurm and GNU parallel hand-off
-// (a line of the emitted job list, run by the shell as a scheduler would, gives a case that
-// --collect then finds), and non-empty PNG plots.
+// the new case, an interrupted case runs again), errors that point at the study file's line, the
+// Slurm and GNU parallel hand-off (a line of the emitted job list, run by the shell as a scheduler
+// would, gives a case that --collect then finds), and non-empty PNG plots.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -21,7 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::kProgram;
 using test::slurp;
-using test::StudyDir;
+using test::ScratchDir;
 
 // 64 elements, about 20 cycles: a case takes a fraction of a second.
 const char* kBlock =
@@ -39,8 +39,8 @@ std::string study_text(const std::string& tssfac_list, const std::string& extra 
          "threads: 1\n" + extra;
 }
 
-StudyOutcome run(const StudyDir& d, const std::string& text, StudyOptions o = {}) {
-  const auto file = d.write("study.yaml", text);
+StudyOutcome run(const ScratchDir& d, const std::string& text, StudyOptions o = {}) {
+  const auto file = test::write_file(d.path() / "study.yaml", text);
   o.program = kProgram;
   o.output_dir = d.path() / "out";
   std::ostringstream log;
@@ -55,8 +55,8 @@ std::size_t lines(const std::string& text) {
 }
 
 TEST(StudyRun, TableReuseAndExtension) {
-  StudyDir d;
-  d.write("block.yaml", kBlock);
+  ScratchDir d;
+  test::write_file(d.path() / "block.yaml", kBlock);
   auto r = run(d, study_text("[0.9, 0.6]"));
   EXPECT_EQ(r.cases, 2u);
   EXPECT_EQ(r.ran, 2u);
@@ -79,15 +79,27 @@ TEST(StudyRun, TableReuseAndExtension) {
   EXPECT_EQ(r.already_finished, 2u);
   EXPECT_EQ(lines(slurp(d.path() / "out" / "study.csv")), 4u);
 
+  // A case that a signal interrupted (its summary says so) is not a result: it runs again.
+  for (const auto& e : fs::directory_iterator(d.path() / "out")) {
+    if (!e.path().filename().string().starts_with("tssfac-0.6_")) continue;
+    std::string summary = slurp(e.path() / "summary.json");
+    ASSERT_NE(summary.find("\"completed\""), std::string::npos) << summary;
+    summary.replace(summary.find("\"completed\""), 11, "\"interrupted\"");
+    test::write_file(e.path() / "summary.json", summary);
+  }
+  r = run(d, study_text("[0.9, 0.6, 0.4]"));
+  EXPECT_EQ(r.ran, 1u) << "the interrupted case runs again, the others are reused";
+  EXPECT_EQ(r.already_finished, 2u);
+
   // A changed base scene is a different effective scene: everything runs again.
-  d.write("block.yaml", std::string(kBlock) + "# edited\n");
+  test::write_file(d.path() / "block.yaml", std::string(kBlock) + "# edited\n");
   r = run(d, study_text("[0.9]"));
   EXPECT_EQ(r.ran, 1u);
 }
 
 TEST(StudyRun, OverrideErrorsPointAtTheStudyLine) {
-  StudyDir d;
-  d.write("block.yaml", kBlock);
+  ScratchDir d;
+  test::write_file(d.path() / "block.yaml", kBlock);
   try {
     run(d, study_text("[0.9,\n    1.7]"));  // tssfac must be in (0, 1]
     FAIL() << "an invalid value must be refused";
@@ -116,8 +128,8 @@ TEST(StudyRun, OverrideErrorsPointAtTheStudyLine) {
 }
 
 TEST(StudyRun, EmittedJobsRunAsASchedulerWouldAndAreCollected) {
-  StudyDir d;
-  d.write("block.yaml", kBlock);
+  ScratchDir d;
+  test::write_file(d.path() / "block.yaml", kBlock);
   StudyOptions o;
   o.emit = Emit::slurm;
   auto r = run(d, study_text("[0.9, 0.6]"), o);
@@ -151,8 +163,8 @@ TEST(StudyRun, EmittedJobsRunAsASchedulerWouldAndAreCollected) {
 
 TEST(StudyRun, PlotsAreNonEmptyPngs) {
   if (!output::find_gnuplot()) GTEST_SKIP() << "gnuplot is not installed (Debian package gnuplot-nox)";
-  StudyDir d;
-  d.write("block.yaml", kBlock);
+  ScratchDir d;
+  test::write_file(d.path() / "block.yaml", kBlock);
   const auto r = run(d, study_text("[0.9, 0.6]", "case_plots: true\n"));
   EXPECT_TRUE(r.warnings.empty()) << r.warnings.front();
   int pngs = 0;
