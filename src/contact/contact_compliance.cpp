@@ -43,7 +43,7 @@ double hertz_compliance(const model::Material& m) {
 
 double peak_force_error(double eps) { return std::pow(1 + eps, -0.6) - 1; }
 double indentation_error(double eps) { return std::pow(1 + eps, 0.6) - 1; }
-double eps_warning_limit() { return std::pow(0.95, -1 / 0.6) - 1; }
+double eps_warning_limit() { return std::pow(0.90, -1 / 0.6) - 1; }
 
 PenaltyCompliance penalty_compliance(const model::Model& model, const PenaltyContact& contact) {
   const SegmentSet& set = contact.segments();
@@ -169,19 +169,19 @@ std::string compliance_lines(const model::Model& model, const PenaltyContact& co
       // For SOFT 0 the springs scale with SLSFAC, so eps does inversely.
       char advice[96];
       if (contact.soft() == 0)
-        std::snprintf(advice, sizeof advice, "SLSFAC %.2g keeps it within 5 %%", contact.law().SLSFAC * eps / limit);
+        std::snprintf(advice, sizeof advice, "SLSFAC %.2g keeps the bound within 10 %%", contact.law().SLSFAC * eps / limit);
       else
-        std::snprintf(advice, sizeof advice, "stiffer springs (SLSFAC, SOFSCL) keep it within 5 %%");
+        std::snprintf(advice, sizeof advice, "stiffer springs (SLSFAC, SOFSCL) lower it");
       std::snprintf(buf, sizeof buf,
-                    "    warning: contact '%s': the penalty springs are soft against the bodies (peak force %.1f %% "
-                    "low); %s\n",
+                    "    warning: contact '%s': the penalty springs are soft against the bodies (peak force up to "
+                    "%.1f %% low); %s\n",
                     contact.name().c_str(), -100 * peak_force_error(eps), advice);
       out += buf;
     }
   } else {
     std::snprintf(buf, sizeof buf,
                   "    penalty compliance: %.3g m/Pa against E* %.4g Pa: a contact narrower than %.3g m (radius) "
-                  "loses more than 5 %% of its peak force\n",
+                  "may lose more than 10 %% of its peak force\n",
                   c.layer, c.e_star, c.radius_at(limit));
     out = buf;
   }

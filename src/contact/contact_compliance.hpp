@@ -38,7 +38,8 @@ struct PenaltyCompliance {
 double peak_force_error(double eps);
 // Indentation (and duration) error, (1 + eps)^(3/5) - 1 (> 0).
 double indentation_error(double eps);
-// eps beyond which the peak force is low by more than 5 %: (1 + eps)^(-3/5) = 0.95.
+// eps beyond which check warns: the bound says the peak force is more than 10 % low,
+// (1 + eps)^(-3/5) = 0.90; the bound being about twice the real effect, that is a loss of ~5 %.
 double eps_warning_limit();
 
 // Estimated over the contact zone: the nodes of each side within one element of the other side's
@@ -54,8 +55,9 @@ double hertz_impact_radius(double e_star, double R, double m, double v);
 namespace plyimpact::contact {
 
 // check's lines for one contact: the layer's compliance, its effect on the impactor's Hertz
-// contact when the scene has a round-nosed impactor (else the contact radius below which it
-// distorts the peak force by more than 5 %), and a warning with the SLSFAC that keeps it within 5 %.
+// contact when the scene has a round-nosed impactor (else the contact radius below which the bound
+// exceeds 10 % of the peak force), and a warning past eps_warning_limit with the SLSFAC that
+// brings the bound back to 10 % (SOFT 0).
 std::string compliance_lines(const model::Model& model, const PenaltyContact& contact, const config::Scene& scene);
 
 }  // namespace plyimpact::contact

@@ -8,7 +8,8 @@
 //    which the springs widen): the predicted ratio (1 + eps_0.1)^(-3/5) / (1 + eps_2)^(-3/5) must
 //    lie below the measured one and the predicted loss within 2.5 times the measured loss (measured
 //    2.0 times for the force, 1.9 for the indentation).
-//  - check's rule: a warning when the predicted peak-force loss exceeds 5 %: at SLSFAC 0.1 it does
+//  - check's rule: a warning when the predicted peak-force loss (the bound) exceeds 10 %, i.e. a
+//    real loss of about 5 %: at SLSFAC 0.1 it does
 //    (the measured loss is 14 %), at SLSFAC 2 it is quiet (predicted 2.3 %).
 #include <gtest/gtest.h>
 
