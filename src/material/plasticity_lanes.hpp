@@ -1,50 +1,12 @@
 // *MAT_003 / *MAT_024 update of the element pass: the J2 radial return of plasticity.hpp point by
-// point (it branches, so it does not vectorise), each with its own rotation of stress and back
-// stress. History: kPlasticityHistory values per integration point.
+// point, each with its own rotation of stress and back stress.
 #pragma once
 
-#include <cstddef>
-
-#include "material/lane_point.hpp"
-#include "element/kinematics.hpp"
 #include "material/plasticity.hpp"
+#include "material/pointwise_return_lanes.hpp"
 
 namespace plyimpact::material {
 
-class PlasticityLanes {
- public:
-  static constexpr bool kTotalLagrangian = false;
-  static constexpr bool kElementRotation = false;
-  static constexpr bool kIncremental = true;
-  // history: (elements * points, kPlasticityHistory); erosion_code: reported when a point fails.
-  PlasticityLanes(const PlasticityParams& p, double* history, int erosion_code)
-      : p_(p), history_(history), code_(erosion_code) {}
-
-  PLYIMPACT_LANE_KERNEL void update(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) const {
-    for (int l = 0; l < kLanes; ++l) {
-      for (int i = 0; i < 6; ++i) s[i][l] = 0;
-      if (l >= p.n || !p.ok[l]) continue;
-      double Rl[9], Dl[6], sl[6];
-      for (int i = 0; i < 9; ++i) Rl[i] = p.R[i][l];
-      for (int i = 0; i < 6; ++i) Dl[i] = p.D[i][l], sl[i] = s_old[i][l];
-      const auto res = plasticity_update(p_, Rl, Dl, p.dt, sl, &history_[std::size_t(p.elem[l]) * kPlasticityHistory]);
-      for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
-      if (res.failed) erode[l] = code_;
-    }
-  }
-
-  int update_point(const Point& p, double s[6], double* history) const {
-    double R[9];
-    element::hughes_winget(p.W, p.dt, R);
-    return plasticity_update(p_, R, p.D, p.dt, s, history).failed ? code_ : 0;
-  }
-
-  void commit(Index, int) const {}
-
- private:
-  const PlasticityParams& p_;
-  double* history_;
-  int code_;
-};
+using PlasticityLanes = PointwiseReturnLanes<PlasticityParams, plasticity_update, kPlasticityHistory>;
 
 }  // namespace plyimpact::material

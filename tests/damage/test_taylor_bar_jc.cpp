@@ -51,7 +51,7 @@ struct Result {
   long elements = 0;
 };
 
-Result run_bar(int n, int k, int nz, double t_end) {
+Result run_bar(int n, int k, int nz, double t_end, double v0 = kV0, double mu = 0) {
   const std::string yaml =
       "units: SI\n"
       "control: {termination_time: " + std::to_string(t_end) + "}\n"
@@ -65,8 +65,8 @@ Result run_bar(int n, int k, int nz, double t_end) {
       "mesh:\n  boxes: [{part: bar, size: [3.81e-3, 3.81e-3, 25.4e-3], elements: [1, 1, 1]}]\n"
       "node_sets:\n  x0: {plane: {axis: x, value: 0}}\n  y0: {plane: {axis: y, value: 0}}\n"
       "boundary_conditions:\n  - {node_set: x0, fix: [x]}\n  - {node_set: y0, fix: [y]}\n"
-      "initial_velocity:\n  - {part: bar, velocity: [0, 0, -190]}\n"
-      "rigid_walls:\n  - {name: anvil, point: [0, 0, -0.5e-3], normal: [0, 0, 1]}\n";
+      "initial_velocity:\n  - {part: bar, velocity: [0, 0, " + std::to_string(-v0) + "]}\n"
+      "rigid_walls:\n  - {name: anvil, point: [0, 0, -0.5e-3], normal: [0, 0, 1], friction: " + std::to_string(mu) + "}\n";
   const config::Scene scene = config::load_scene_from_string(yaml, "taylor_bar_jc.yaml");
   const mesh::Mesh mesh = test::quarter_cylinder(kR0, kL0, n, k, nz);
   const model::Model model = model::build_model(scene, mesh);
@@ -121,6 +121,48 @@ TEST(TaylorBarJohnsonCook, OfhcCopperAt190MetresPerSecondAgainstTheTest) {
             << 100 * (fine.diameter / coarse.diameter - 1) << " %\n";
   EXPECT_NEAR(fine.length, coarse.length, 0.01 * fine.length);
   EXPECT_NEAR(fine.diameter, coarse.diameter, 0.05 * fine.diameter);
+}
+
+// The test series the 190 m/s shot belongs to (same bar, same copper, same collection: 130, 146
+// and 190 m/s). Two checks that do not depend on the size of the model-form gap:
+// - the final length's sensitivity to the impact speed, dL/dV over 130-190 m/s: the test gives
+//   -55.9 mm per km/s over a 3.35 mm span read to about 0.1 mm per end, so +-6 % is the reading;
+//   with our mesh error (< 1 %) the slope must match within 10 % (measured: 0.3 %). It tells the
+//   rate term apart: with C = 0 the slope is 12 % steeper (and the lengths within 2 % of the test),
+//   while switching the thermal softening off moves it by 2 % only.
+// - the face diameter depends mostly on the anvil's friction, which the test does not report:
+//   the measured diameter must lie between our frictionless wall (the face slides freely: an
+//   upper bound) and a wall with Coulomb friction 0.5 (a dry steel-on-copper value that nearly
+//   holds the face: a lower bound). Friction moves the length by under 2 %.
+// The length stays 5.6-6.8 % long at every speed, too stiff rather than too soft: the direction
+// Zerilli & Armstrong (1987) reported for Johnson & Cook's copper on these tests, and the C = 0
+// run above places it in the rate term C ln(rate), extrapolated here from the torsion and
+// Hopkinson-bar rates it was fitted to.
+TEST(TaylorBarJohnsonCook, OfhcCopperSeriesSlopeAndFrictionBracket) {
+  struct Shot {
+    double v, length, diameter;
+  };
+  const Shot shots[] = {{130, 19.558e-3, 9.906e-3}, {146, 18.694e-3, 10.668e-3}, {190, 16.205e-3, 13.564e-3}};
+  const double t_end = 90e-6;
+  double length_low = 0, length_high = 0;
+  for (const Shot& shot : shots) {
+    const Result free_face = run_bar(3, 2, 27, t_end, shot.v, 0.0);
+    const Result held_face = run_bar(3, 2, 27, t_end, shot.v, 0.5);
+    std::cout << shot.v << " m/s: length " << free_face.length * 1e3 << " mm (test " << shot.length * 1e3 << ", "
+              << 100 * (free_face.length / shot.length - 1) << " %), face diameter " << held_face.diameter * 1e3
+              << " (friction 0.5) to " << free_face.diameter * 1e3 << " mm (frictionless), test "
+              << shot.diameter * 1e3 << " mm\n";
+    EXPECT_NEAR(free_face.length, shot.length, 0.08 * shot.length);
+    EXPECT_GT(free_face.length, shot.length);  // the published direction: too stiff, not too soft
+    EXPECT_LT(held_face.diameter, shot.diameter);
+    EXPECT_GT(free_face.diameter, shot.diameter);
+    if (shot.v == 130) length_low = free_face.length;
+    if (shot.v == 190) length_high = free_face.length;
+  }
+  const double test_slope = (shots[2].length - shots[0].length) / (shots[2].v - shots[0].v);
+  const double slope = (length_high - length_low) / (shots[2].v - shots[0].v);
+  std::cout << "dL/dV " << slope * 1e6 << " mm per km/s (test " << test_slope * 1e6 << ")\n";
+  EXPECT_NEAR(slope, test_slope, 0.10 * std::abs(test_slope));
 }
 
 }  // namespace

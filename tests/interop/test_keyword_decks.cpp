@@ -14,27 +14,18 @@
 #include <sstream>
 #include <vector>
 
-#include "config/scene_loader.hpp"
-#include "interop_support.hpp"
-#include "keyword/converter.hpp"
+#include "deck_support.hpp"
 
 using namespace plyimpact;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kDecks = fs::path(PLYIMPACT_SOURCE_DIR) / "tests" / "data" / "decks";
-
-std::string deck_history(const std::string& deck, const fs::path& dir) {
-  keyword::convert_deck_file((kDecks / deck).string(), "SI", dir / "deck.yaml");
-  const config::Scene scene = config::load_scene((dir / "deck.yaml").string());
-  return test::run_history(scene, dir / "deck_run");
-}
-
-std::string yaml_history(const std::string& yaml, const fs::path& dir) {
-  const config::Scene scene = config::load_scene_from_string(yaml, (dir / "yaml.yaml").string());
-  return test::run_history(scene, dir / "yaml_run");
-}
+using test::convert_text;
+using test::deck_history;
+using test::kDecks;
+using test::refusal;
+using test::yaml_history;
 
 // tests/contact/test_rod_wall.cpp's set-up with default bulk viscosity and the converter's names.
 TEST(KeywordDecks, RodOnRigidWallGivesTheHistoryOfTheYamlScene) {
@@ -212,11 +203,6 @@ contacts:
 
 // ------------------------------------------------------------------ parser
 
-keyword::Conversion convert_text(const fs::path& dir, const std::string& deck, const std::string& units = "SI") {
-  test::write_file(dir / "d.k", deck);
-  return keyword::convert_deck(keyword::read_deck((dir / "d.k").string()), {units, "d.msh"});
-}
-
 const std::string kCube = R"(*CONTROL_TERMINATION
 1.0e-6
 *PART
@@ -323,12 +309,6 @@ TEST(KeywordParser, UnitsScaleTheMeshAndGoToTheScene) {
 }
 
 // ------------------------------------------------------------------ refusals
-
-std::string refusal(const keyword::Conversion& c, const std::string& keyword) {
-  for (const auto& e : c.coverage)
-    if (e.keyword == keyword && e.status == "refused") return e.note;
-  return "";
-}
 
 TEST(KeywordRefusals, UnknownKeywordUnsupportedOptionAndFieldValueNameTheLine) {
   const fs::path dir = test::scratch_dir();

@@ -6,27 +6,16 @@
 
 #include <filesystem>
 
-#include "config/scene_loader.hpp"
-#include "interop_support.hpp"
-#include "keyword/converter.hpp"
+#include "deck_support.hpp"
 
 using namespace plyimpact;
 namespace fs = std::filesystem;
 
 namespace {
 
-const fs::path kDecks = fs::path(PLYIMPACT_SOURCE_DIR) / "tests" / "data" / "decks";
-
-keyword::Conversion convert_text(const fs::path& dir, const std::string& deck) {
-  test::write_file(dir / "d.k", deck);
-  return keyword::convert_deck(keyword::read_deck((dir / "d.k").string()), {"SI", "d.msh"});
-}
-
-std::string refusal(const keyword::Conversion& c, const std::string& keyword) {
-  for (const auto& e : c.coverage)
-    if (e.keyword == keyword && e.status == "refused") return e.note;
-  return "";
-}
+using test::convert_text;
+using test::kDecks;
+using test::refusal;
 
 const std::string kCubeMesh = "*CONTROL_TERMINATION\n1.0e-6\n*SECTION_SOLID\n1\n"
                               "*NODE\n1,0,0,0\n2,1,0,0\n3,1,1,0\n4,0,1,0\n5,0,0,1\n6,1,0,1\n7,1,1,1\n8,0,1,1\n"
@@ -77,8 +66,7 @@ rigid_walls:
   const std::string text = test::read_file(dir / "deck.yaml");
   EXPECT_NE(text.find("eos: {card: EOS_GRUNEISEN, C: 3940, S1: 1.489, GAMAO: 2.02, A: 0.47}"), std::string::npos) << text;
   const std::string a = test::run_history(config::load_scene((dir / "deck.yaml").string()), dir / "deck_run");
-  const std::string b =
-      test::run_history(config::load_scene_from_string(yaml, (dir / "yaml.yaml").string()), dir / "yaml_run");
+  const std::string b = test::yaml_history(yaml, dir);
   EXPECT_GT(std::count(a.begin(), a.end(), '\n'), 45);
   EXPECT_EQ(a, b);
   fs::remove_all(dir);
