@@ -14,6 +14,7 @@
 #include "app/study_command.hpp"
 #include "config/scene_digest.hpp"
 #include "config/scene_loader.hpp"
+#include "contact/contact_compliance.hpp"
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
@@ -179,7 +180,7 @@ int check(const std::string& path, const Overrides& overrides, std::ostream& out
                   "contact stable step %.4g s\n",
                   c.name().c_str(), c.soft(), c.num_segments(), c.num_slave_nodes(), c.stiffness_min(),
                   c.stiffness_max(), c.stable_step());
-    out << buf;
+    out << buf << contact::compliance_lines(m, c, l.scene);
     if (ip.count == 0) {
       out << "    initial penetrations: none\n";
     } else {

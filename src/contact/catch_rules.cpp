@@ -9,6 +9,61 @@
 
 namespace plyimpact::contact {
 
+namespace {
+
+// A node in contact pressed into a concave corner or groove of the surface (the shared node of
+// four segments pushed in under an impactor's pole, the bottom of a dent) projects beyond the
+// edges of every segment meeting there: each segment's closest point is clamped to the shared
+// node or edge, and the MAXPAR range of none covers the node. It is still behind all of them, in
+// the region no segment's normal range reaches, so releasing it drops a compressed spring (its
+// energy is lost and a penetration is reported). Here it stays on the least penetrated of those
+// segments, with the clamped closest point (the force acts at the corner node). Which segments
+// meet there: the node's last segment and its neighbours whose closest point is the nearest one
+// (within 1e-3 of the segment size). Beside a convex edge (a node sliding off the rim of a block)
+// the node is in front of the side face that meets there, so it is released as before; and it is
+// held only within the depth the neighbour rule accepts (its depth at the last pass plus the
+// one-step catch depth, below the release depth).
+long hold_in_concave_corner(const SegmentSet& set, SegmentSearch& search, const SpringHistory& springs,
+                            std::size_t i, const double* x, double new_contact_depth, Projection& best) {
+  const long last = springs.segment[i];
+  const Index node = set.node_id(i);
+  const double* p = &x[3 * std::size_t(node)];
+  const double last_depth = std::max(-springs.gap[i], 0.0);
+  constexpr int kMax = 16;
+  long seg[kMax];
+  Projection proj[kMax];
+  double dist[kMax];
+  int n = 0;
+  auto add = [&](long s) {
+    const Index* q = set.segment_nodes(std::size_t(s));
+    if (n == kMax || q[0] == node || q[1] == node || q[2] == node || q[3] == node) return;
+    const double* sg = search.record(set, std::size_t(s), x);
+    proj[n] = project_to_bilinear(p, sg, search.options().MAXPAR);
+    const double d[3] = {p[0] - proj[n].point[0], p[1] - proj[n].point[1], p[2] - proj[n].point[2]};
+    dist[n] = std::sqrt(dot3(d, d));
+    seg[n++] = s;
+  };
+  add(last);
+  for (const Index* k = set.neighbours_begin(std::size_t(last)); k != set.neighbours_end(std::size_t(last)); ++k) add(*k);
+  if (n == 0) return -1;
+  double nearest = dist[0];
+  for (int k = 0; k < n; ++k) nearest = std::min(nearest, dist[k]);
+  const double* a1 = search.record(set, std::size_t(last), x) + 4;
+  const double size = 2 * std::sqrt(dot3(a1, a1));
+  long held = -1;
+  double held_g = 0;
+  for (int k = 0; k < n; ++k) {
+    if (dist[k] > nearest + 1e-3 * std::max(size, nearest)) continue;
+    const double g = proj[k].gap - springs.offset_on(i, seg[k]);
+    const double depth = search.record(set, std::size_t(seg[k]), x)[7];
+    if (!(g < 0) || -g >= std::min(depth, last_depth + new_contact_depth + 0.02 * depth)) return -1;  // in front, or deep
+    if (held < 0 || g > held_g) held = seg[k], held_g = g, best = proj[k];
+  }
+  return held;
+}
+
+}  // namespace
+
 long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHistory& springs, std::size_t i,
                    const double* x, Projection& best, double new_contact_depth, const double* v, double dt) {
   const std::span<const Index> cands = search.candidates(i);
@@ -175,6 +230,8 @@ long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHis
   }
   for (const Index s : cands)
     if (s != last) consider(s);
+  if (best_s < 0 && last >= 0 && last_depth > 0) 
+    best_s = hold_in_concave_corner(set, search, springs, i, x, new_contact_depth, best);
   return best_s;
 }
 

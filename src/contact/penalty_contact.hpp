@@ -109,6 +109,10 @@ class PenaltyContact {
   const std::vector<Index>& force_nodes() const { return set_.force_nodes(); }
   const std::vector<double>& node_forces() const { return fc_; }
   std::size_t num_segments() const { return set_.num_segments(); }
+  // For check's compliance estimate (contact_compliance).
+  const model::Contact& definition() const { return def_; }
+  const SegmentSet& segments() const { return set_; }
+  const PenaltyLaw& law() const { return law_; }
   std::size_t num_slave_nodes() const { return set_.num_nodes(); }
   double stiffness_min() const { return bounds_.k_min; }   // N/m over possible node-segment pairs
   double stiffness_max() const { return bounds_.k_max; }

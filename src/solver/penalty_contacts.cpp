@@ -84,6 +84,12 @@ void PenaltyContacts::apply(const ForceContext& ctx) {
   }
   energy_ = ec;
   friction_ = ef;
+  columns_.clear();
+  for (const auto& c : contacts_) {
+    const auto& f = c.forces();
+    columns_.insert(columns_.end(), {f.resultant[0], f.resultant[1], f.resultant[2], f.normal, f.tangential});
+  }
+  row_.record(columns_, ctx.dt == 0);
 }
 
 void PenaltyContacts::energies(std::span<double> out) const {
@@ -115,16 +121,14 @@ std::vector<std::string> PenaltyContacts::history_columns() const {
 }
 
 void PenaltyContacts::history_values(std::vector<double>& row) const {
-  for (const auto& c : contacts_) {
-    const auto& f = c.forces();
-    row.insert(row.end(), {f.resultant[0], f.resultant[1], f.resultant[2], f.normal, f.tangential});
-  }
+  row.insert(row.end(), row_.row().begin(), row_.row().end());
 }
 
 void PenaltyContacts::visit_state(StateVisitor& visitor) {
   StateGroup group(visitor, "contact");
   visitor.scalar("energy", energy_);
   visitor.scalar("friction", friction_);
+  row_.visit_state(visitor);
   // The springs, their history and the surfaces live in each PenaltyContact.
   for (auto& c : contacts_) {
     StateGroup one(visitor, c.name());

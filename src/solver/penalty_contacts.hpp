@@ -17,6 +17,7 @@
 #include "contact/bonded_interfaces.hpp"
 #include "contact/penalty_contact.hpp"
 #include "solver/force_contributor.hpp"
+#include "solver/row_lag.hpp"
 
 namespace plyimpact::solver {
 
@@ -59,6 +60,8 @@ class PenaltyContacts : public ForceContributor {
   std::vector<std::string> warnings_;
   double dt_floor_ = 0;             // s, a priori step when stiffer than the elements, else 0
   double energy_ = 0, friction_ = 0;  // J, sums over the contacts at the last apply
+  std::vector<double> columns_;     // scratch: the last pass's force columns
+  RowLag row_;                      // the force columns at the history row's time
 };
 
 }  // namespace plyimpact::solver

@@ -31,6 +31,9 @@ void RigidBodyCoupling::apply(const ForceContext& context) {
       if (const int b = node_body_[nodes[u]]; b >= 0)
         for (int d = 0; d < 3; ++d) bodies[b].contact_force[d] += fc[3 * u + d];
   }
+  columns_.clear();
+  for (const auto& b : bodies) columns_.insert(columns_.end(), b.contact_force.begin(), b.contact_force.end());
+  row_.record(columns_, context.dt == 0);
 }
 
 std::vector<std::string> RigidBodyCoupling::history_columns() const {
@@ -45,11 +48,21 @@ std::vector<std::string> RigidBodyCoupling::history_columns() const {
 void RigidBodyCoupling::history_values(std::vector<double>& row) const {
   // The row is at t^n, the balance's time; after the step a body's centre is at t^{n+1}: step it
   // back by its velocity of that step (exact for the centre's update). v is v^{n+1/2}.
+  // The contact force is that of the pass at t^n (row_), not the last one at t^{n+1}.
   const double back = last_step_;
-  for (const auto& b : bodies_.states())
+  const auto force = row_.row();
+  std::size_t k = 0;
+  for (const auto& b : bodies_.states()) {
     row.insert(row.end(), {b.x[0] - back * b.v[0], b.x[1] - back * b.v[1], b.x[2] - back * b.v[2], b.v[0], b.v[1],
-                           b.v[2], b.a[0], b.a[1], b.a[2], b.contact_force[0], b.contact_force[1],
-                           b.contact_force[2]});
+                           b.v[2], b.a[0], b.a[1], b.a[2], force[k], force[k + 1], force[k + 2]});
+    k += 3;
+  }
+}
+
+void RigidBodyCoupling::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "rigid_body_coupling");
+  visitor.scalar("last_step", last_step_);
+  row_.visit_state(visitor);
 }
 
 }  // namespace plyimpact::solver

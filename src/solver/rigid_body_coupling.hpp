@@ -8,6 +8,7 @@
 
 #include "solver/force_contributor.hpp"
 #include "solver/rigid_body.hpp"
+#include "solver/row_lag.hpp"
 
 namespace plyimpact::solver {
 
@@ -24,6 +25,7 @@ class RigidBodyCoupling : public ForceContributor {
   void apply(const ForceContext& context) override;
   std::vector<std::string> history_columns() const override;
   void history_values(std::vector<double>& row) const override;
+  void visit_state(StateVisitor& visitor) override;
 
  private:
   const model::Model& model_;
@@ -32,6 +34,8 @@ class RigidBodyCoupling : public ForceContributor {
   const std::vector<std::unique_ptr<ForceContributor>>& contributors_;
   std::vector<NodeForces> forces_;  // scratch, reused
   double last_step_ = 0;            // s, Delta t^{n+1/2} of the last pass (history rows are at t^n)
+  std::vector<double> columns_;     // scratch: the bodies' contact forces of the last pass
+  RowLag row_;                      // those at the history row's time
 };
 
 }  // namespace plyimpact::solver

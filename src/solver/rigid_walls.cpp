@@ -24,6 +24,9 @@ void RigidWalls::apply(const ForceContext& c) {
     ew += w.energy();
   }
   energy_ = ew;
+  columns_.clear();
+  for (const auto& w : walls_) columns_.insert(columns_.end(), {w.normal_force(), w.tangential_force()});
+  row_.record(columns_, c.dt == 0);
 }
 
 std::vector<std::string> RigidWalls::history_columns() const {
@@ -34,12 +37,13 @@ std::vector<std::string> RigidWalls::history_columns() const {
 }
 
 void RigidWalls::history_values(std::vector<double>& row) const {
-  for (const auto& w : walls_) row.insert(row.end(), {w.normal_force(), w.tangential_force()});
+  row.insert(row.end(), row_.row().begin(), row_.row().end());
 }
 
 void RigidWalls::visit_state(StateVisitor& visitor) {
   StateGroup group(visitor, "rigid_walls");
   visitor.scalar("energy", energy_);
+  row_.visit_state(visitor);
   for (std::size_t i = 0; i < walls_.size(); ++i) {
     StateGroup wall(visitor, walls_[i].wall().name);
     walls_[i].visit_state(visitor);

@@ -5,6 +5,7 @@
 
 #include "contact/rigid_wall.hpp"
 #include "solver/force_contributor.hpp"
+#include "solver/row_lag.hpp"
 
 namespace plyimpact::solver {
 
@@ -27,6 +28,8 @@ class RigidWalls : public ForceContributor {
  private:
   std::vector<contact::RigidWallConstraint> walls_;
   double energy_ = 0;  // J, sum over the walls at the last apply
+  std::vector<double> columns_;  // scratch: the last pass's force columns
+  RowLag row_;                   // the force columns at the history row's time
 };
 
 }  // namespace plyimpact::solver

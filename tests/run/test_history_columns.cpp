@@ -142,14 +142,13 @@ TEST(History, RigidBodyColumnsFollowFreeFallAndTheMomentumLaw) {
   for (std::size_t i = 0; i < t.size(); ++i) EXPECT_EQ(h.at("contact_hit_fz")[i], fz[i]) << "t = " << t[i];
 }
 
-// Known defect, disabled: the contact-force columns (contact_<name>_*, rigid_<body>_contact_*)
-// hold the force of the contact pass at the end of the cycle, t^{n+1}, while the row's time and
-// its energies, reactions and accelerations are at t^n. Reference: the momentum law with the
-// force at the row's time, m (v_after - v_before) = sum (F_n - m g) dt_n, dt_n = (dt^{n-1/2} +
-// dt^{n+1/2}) / 2 (10 printed digits: 1e-8 of the momentum). Measured: the impulse of the column
-// is 1.6 % off; weighting each row's force with the next cycle's step instead closes the law to
-// 1e-14 (and a_z m equals the contact force of the row before).
-TEST(History, DISABLED_ContactForceColumnsAreAtTheRowsTime) {
+// The contact-force columns (contact_<name>_*, rigid_<body>_contact_*) are at the row's time t^n,
+// as its energies, reactions and accelerations are (the contact pass that ends a cycle is at
+// t^{n+1}; the contributors print the pass before it). Reference: the momentum law with the force
+// at the row's time, m (v_after - v_before) = sum (F_n - m g) dt_n, dt_n = (dt^{n-1/2} +
+// dt^{n+1/2}) / 2 (10 printed digits: 1e-8 of the momentum). With the columns one cycle ahead the
+// impulse was 1.6 % off.
+TEST(History, ContactForceColumnsAreAtTheRowsTime) {
   test::ScratchDir dir;
   const double g = 9.81, v0 = -5, M = 7850 * 8e-9;
   const auto h = drop_history(dir);
