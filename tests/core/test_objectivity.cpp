@@ -36,14 +36,7 @@ TEST_P(Objectivity, StressRotatesWithRigidBody) {
       ", Q1: 0, Q2: 0}\nparts:\n  p: {material: m, section: s}\nmesh:\n  boxes:\n    - {part: p, origin: [-0.5, -0.5, "
       "-0.5], size: [1, 1, 1], elements: [1, 1, 1]}\n");
   const auto& blk = model.blocks[0];
-  solver::BlockState st;
-  st.stress.assign(6 * blk.points(), 0.0);
-  st.hourglass.assign(12, 0.0);
-  st.bulk_q.assign(1, 0.0);
-  st.step_q.assign(1, 0.0);
-  st.internal_energy.assign(1, 0.0);
-  st.hourglass_energy.assign(1, 0.0);
-  st.volume.assign(1, 1.0);
+  solver::BlockState st = solver::initial_block_state(model, 0);
   std::vector<double> x = model.X, v(x.size()), f(x.size());
 
   double expected_yy = 0, expected_xx = 0, expected_zz = 0;
