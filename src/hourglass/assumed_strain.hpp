@@ -68,10 +68,12 @@ std::vector<double> assumed_strain_moduli(const model::Model& model, const model
 // G (shear)^2], exact pure bending of a rectangular element. (Sources: Belytschko & Bindeman 1993;
 // Belytschko, Liu & Moran, Nonlinear Finite Elements, sec. 8.7; code_aster R3.06.11.)
 // Forces are accumulated in the element frame (Qs in, Qp out, both stored), so a rigid rotation
-// carries them exactly; Qh = E^T Qp are the global forces, dHG their work (trapezoid rule).
+// carries them exactly; Qh = E^T Qp are the global forces, dHG their work (trapezoid rule), dHG_old
+// its half with the previous cycle's forces.
 PLYIMPACT_LANE_KERNEL void assumed_strain_forces_lanes(double qm, const LaneVec<6>& Hm, const LaneVec<9>& Jx, const LaneScalar& V,
                                         const double (&g)[3][4][kLanes], const LaneVec<12>& Qs, double dt,
-                                        double (&Qp)[3][4][kLanes], double (&Qh)[3][4][kLanes], LaneScalar& dHG) {
+                                        double (&Qp)[3][4][kLanes], double (&Qh)[3][4][kLanes], LaneScalar& dHG,
+                                        LaneScalar& dHG_old) {
   alignas(64) double Ef[9][kLanes], ha[kLanes], hb[kLanes], hc[kLanes];
   PLYIMPACT_LANES element_frame(Jx, l, Ef, ha, hb, hc);
   alignas(64) double gp[3][4][kLanes];  // g in the element frame
@@ -98,10 +100,14 @@ PLYIMPACT_LANE_KERNEL void assumed_strain_forces_lanes(double qm, const LaneVec<
     Qp[2][1][l] = Qs[9][l] + kz * gp[2][1][l] * d8;
     Qp[2][2][l] = Qs[10][l] + kz * gp[2][2][l] * d8;
     Qp[2][3][l] = Qs[11][l] + (1.0 / 3.0) * kz * gp[2][3][l] * d8;
-    double e = 0;  // trapezoid rule, as IHQ 4/5 (the power Q . g is frame invariant)
+    double e_old = 0, e_new = 0;  // trapezoid rule, as IHQ 4/5 (the power Q . g is frame invariant)
     for (int j = 0; j < 3; ++j)
-      for (int a = 0; a < 4; ++a) e += 0.5 * (Qs[4 * j + a][l] + Qp[j][a][l]) * gp[j][a][l] * dt;
-    dHG[l] = e;
+      for (int a = 0; a < 4; ++a) {
+        e_old += 0.5 * Qs[4 * j + a][l] * gp[j][a][l] * dt;
+        e_new += 0.5 * Qp[j][a][l] * gp[j][a][l] * dt;
+      }
+    dHG_old[l] = e_old;
+    dHG[l] = e_old + e_new;
   }
   for (int i = 0; i < 3; ++i)
     for (int a = 0; a < 4; ++a)

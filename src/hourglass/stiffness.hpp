@@ -26,27 +26,30 @@ namespace plyimpact::hourglass {
 std::vector<double> stiffness_hourglass_moduli(const model::Model& model, const model::ElementBlock& block);
 
 // Qs: accumulated forces of the previous cycle (global axes, [4 i + a]); Qh: updated ones; dHG:
-// their work over the step (trapezoid rule between the rotated old and the new force). M: the
+// their work over the step (trapezoid rule between the rotated old and the new force), dHG_old its
+// half with the rotated old force. M: the
 // elements' moduli (stiffness_hourglass_moduli).
 PLYIMPACT_LANE_KERNEL void stiffness_forces_lanes(double qm, const LaneScalar& M, const element::LaneNodeVec& b, const LaneScalar& V,
                                    const LaneVec<9>& R, const double (&g)[3][4][kLanes], const LaneVec<12>& Qs,
-                                   double dt, double (&Qh)[3][4][kLanes], LaneScalar& dHG) {
+                                   double dt, double (&Qh)[3][4][kLanes], LaneScalar& dHG, LaneScalar& dHG_old) {
   PLYIMPACT_LANES {
     double bb = 0;
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 8; ++k) bb += b[i][k][l] * b[i][k][l];
     const double kh = 0.25 * qm * M[l] * V[l] * bb;
-    double e = 0;
+    double e_old = 0, e_new = 0;
     for (int a = 0; a < 4; ++a) {
       const double q0 = Qs[a][l], q1r = Qs[4 + a][l], q2r = Qs[8 + a][l];
       for (int i = 0; i < 3; ++i) {
         const double rotated = R[3 * i][l] * q0 + R[3 * i + 1][l] * q1r + R[3 * i + 2][l] * q2r;
         const double updated = rotated + kh * g[i][a][l] * dt;
-        e += 0.5 * (rotated + updated) * g[i][a][l] * dt;
+        e_old += 0.5 * rotated * g[i][a][l] * dt;
+        e_new += 0.5 * updated * g[i][a][l] * dt;
         Qh[i][a][l] = updated;
       }
     }
-    dHG[l] = e;
+    dHG_old[l] = e_old;
+    dHG[l] = e_old + e_new;
   }
 }
 

@@ -10,20 +10,22 @@ namespace plyimpact::hourglass {
 
 // Qs: the forces of the previous cycle (stored, [4 i + a]); Qh: this cycle's; dHG: their work over
 // the step with the trapezoid rule (previous and new force), like the stress work: the force of a
-// cycle acts over both half steps around it.
+// cycle acts over both half steps around it. dHG_old: the half with the previous cycle's forces.
 PLYIMPACT_LANE_KERNEL void viscous_forces_lanes(double qm, double c, const LaneScalar& rho, const LaneScalar& cbrtV,
                                  const double (&g)[3][4][kLanes], const LaneVec<12>& Qs, double dt,
-                                 double (&Qh)[3][4][kLanes], LaneScalar& dHG) {
+                                 double (&Qh)[3][4][kLanes], LaneScalar& dHG, LaneScalar& dHG_old) {
   alignas(64) double ah[kLanes];
   PLYIMPACT_LANES ah[l] = 0.25 * qm * rho[l] * cbrtV[l] * cbrtV[l] * c;
   PLYIMPACT_LANES {
-    double e = 0;
+    double e_old = 0, e_new = 0;
     for (int i = 0; i < 3; ++i)
       for (int a = 0; a < 4; ++a) {
         Qh[i][a][l] = ah[l] * g[i][a][l];
-        e += 0.5 * (Qs[4 * i + a][l] + Qh[i][a][l]) * g[i][a][l] * dt;
+        e_old += 0.5 * Qs[4 * i + a][l] * g[i][a][l] * dt;
+        e_new += 0.5 * Qh[i][a][l] * g[i][a][l] * dt;
       }
-    dHG[l] = e;
+    dHG_old[l] = e_old;
+    dHG[l] = e_old + e_new;
   }
 }
 

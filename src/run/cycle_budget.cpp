@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "element/hex8.hpp"
+#include "solver/directional_step.hpp"
 
 namespace plyimpact::run {
 namespace {
@@ -22,8 +23,10 @@ CycleEstimate estimate_cycles(const model::Model& model) {
   e.dt = std::numeric_limits<double>::infinity();
   for (const auto& b : model.blocks) {
     if (b.rigid) continue;
-    const double c = model.materials[b.material].wave_speed;
+    const double c_material = model.materials[b.material].wave_speed;
+    const std::vector<double> c_step = solver::step_wave_speeds(model, b);
     for (std::size_t k = 0; k < b.size(); ++k) {
+      const double c = c_step.empty() ? c_material : c_step[k];
       element::NodeVec x;
       for (int n = 0; n < 8; ++n)
         for (int d = 0; d < 3; ++d) x[d][n] = model.X[3 * std::size_t(b.conn[8 * k + n]) + d];
@@ -35,6 +38,7 @@ CycleEstimate estimate_cycles(const model::Model& model) {
         e.material = b.material;
         e.part = model.parts[b.part].name;
         e.length = length;
+        e.wave_speed = c;
       }
     }
   }
@@ -54,7 +58,7 @@ void require_cycle_budget(const config::Scene& scene, const model::Model& model,
   throw InputError(config::at(scene.where_of(key))
                    << "the run would need about " << e.cycles << " cycles (termination time "
                    << control.termination_time << " s / stable step " << e.dt << " s of element " << e.element
-                   << " in part '" << e.part << "': length " << e.length << " m, wave speed " << mat.wave_speed
+                   << " in part '" << e.part << "': length " << e.length << " m, wave speed " << e.wave_speed
                    << " m/s of material '" << mat.name << "', TSSFAC " << control.tssfac
                    << "); found more cycles than the limit; allowed at most " << limit << " cycles (control.cycle_limit"
                    << (control.cycle_limit > 0 ? "" : ", default") << "): a shorter termination time, a larger "

@@ -22,6 +22,7 @@ struct CycleEstimate {
   int material = -1;       // index into Model::materials
   std::string part;        // its part
   double length = 0;       // m, its characteristic length
+  double wave_speed = 0;   // m/s, the wave speed of its step (solver/directional_step)
 };
 
 /// Initial element stable step and cycle count of `model`.

@@ -62,11 +62,13 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     // the initial step. Le: characteristic length V / A_max (step, bulk viscosity).
     alignas(64) double dte[kLanes], Le[kLanes];
     alignas(64) double Qstep[kLanes];  // Q of the step: held one in, this cycle's out (step_q)
+    alignas(64) double c_step[kLanes];  // wave speed of the step (directional_step.hpp)
     for (int l = 0; l < kLanes; ++l) Qstep[l] = st.step_q[elem[l]];
+    for (int l = 0; l < kLanes; ++l) c_step[l] = st.step_wave_speed.empty() ? c : st.step_wave_speed[elem[l]];
     element::hex8_characteristic_length_lanes(xe, V, Le);
     PLYIMPACT_LANES {
       Qstep[l] = step_q(Le[l], c, trD[l], q1, q2, Qstep[l]);
-      dte[l] = element_time_step(Le[l], c, Qstep[l]);
+      dte[l] = element_time_step(Le[l], c_step[l], Qstep[l]);
     }
     if (!blk.step_scale.empty())  // mass scaling (solver/mass_scaling.hpp)
       for (int l = 0; l < kLanes; ++l) dte[l] *= blk.step_scale[elem[l]];
@@ -81,12 +83,16 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     // Stress work (trapezoid rule) and bulk viscosity (compression only; length Le as the step,
     // see bulk_viscosity), whose work uses the trapezoid rule too, (q_old + q_new)/2, as the force
     // acts over both half steps around it.
-    alignas(64) double dIE[kLanes], q[kLanes], dQ[kLanes];
+    // The *_old halves are the work of the previous cycle's stress (and q, hourglass forces) alone:
+    // all an element that erodes in this pass books, because its new forces never reach the nodes
+    // (see erosion.hpp, erode_element).
+    alignas(64) double dIE[kLanes], dIE_old[kLanes], q[kLanes], dQ[kLanes], dQ_old[kLanes];
     PLYIMPACT_LANES {
-      double p = 0;
-      for (int i = 0; i < 3; ++i) p += 0.5 * (s_old[i][l] + s[i][l]) * D[i][l];
-      for (int i = 3; i < 6; ++i) p += (s_old[i][l] + s[i][l]) * D[i][l];
-      dIE[l] = V[l] * p * dt;
+      double p_old = 0, p_new = 0;
+      for (int i = 0; i < 3; ++i) p_old += 0.5 * s_old[i][l] * D[i][l], p_new += 0.5 * s[i][l] * D[i][l];
+      for (int i = 3; i < 6; ++i) p_old += s_old[i][l] * D[i][l], p_new += s[i][l] * D[i][l];
+      dIE_old[l] = V[l] * p_old * dt;
+      dIE[l] = dIE_old[l] + V[l] * p_new * dt;
     }
     alignas(64) double cbrtV[kLanes];  // V^(1/3): hourglass area scale
     element::hex8_cube_root_volume_lanes(Jx, V, cbrtV);
@@ -95,7 +101,8 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     PLYIMPACT_LANES {
       const double ll = Le[l];
       q[l] = trD[l] < 0 ? rho[l] * ll * (q1 * ll * trD[l] * trD[l] - q2 * c * trD[l]) : 0.0;
-      dQ[l] = -0.5 * (q_old[l] + q[l]) * trD[l] * V[l] * dt;
+      dQ_old[l] = -0.5 * q_old[l] * trD[l] * V[l] * dt;
+      dQ[l] = dQ_old[l] - 0.5 * q[l] * trD[l] * V[l] * dt;
     }
 
     // Internal force -V (sigma - q I) b_k.
@@ -111,7 +118,7 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     }
 
     // Hourglass: shape vectors and rates, then the IHQ's force law.
-    alignas(64) double gamma[4][8][kLanes], g[3][4][kLanes], Qh[3][4][kLanes], dHG[kLanes];
+    alignas(64) double gamma[4][8][kLanes], g[3][4][kLanes], Qh[3][4][kLanes], dHG[kLanes], dHG_old[kLanes];
     element::hex8_hourglass_lanes<HG::kProject>(xe, ve, b, gamma, g);
     alignas(64) double Qs[12][kLanes];    // stored hourglass forces of the previous cycle
     alignas(64) double Qp[3][4][kLanes];  // IHQ 6: new forces in the element frame (stored)
@@ -121,14 +128,14 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     if constexpr (HG::kStiffness) {
       alignas(64) double Mh[kLanes];
       for (int l = 0; l < kLanes; ++l) Mh[l] = st.hourglass_moduli[elem[l]];
-      hourglass::stiffness_forces_lanes(qm, Mh, b, V, R, g, Qs, dt, Qh, dHG);
+      hourglass::stiffness_forces_lanes(qm, Mh, b, V, R, g, Qs, dt, Qh, dHG, dHG_old);
     } else if constexpr (HG::kAssumedStrain) {
       alignas(64) double Hm[6][kLanes];
       for (int l = 0; l < kLanes; ++l)
         for (int i = 0; i < 6; ++i) Hm[i][l] = st.hourglass_moduli[6 * std::size_t(elem[l]) + i];
-      hourglass::assumed_strain_forces_lanes(qm, Hm, Jx, V, g, Qs, dt, Qp, Qh, dHG);
+      hourglass::assumed_strain_forces_lanes(qm, Hm, Jx, V, g, Qs, dt, Qp, Qh, dHG, dHG_old);
     } else {
-      hourglass::viscous_forces_lanes(qm, c, rho, cbrtV, g, Qs, dt, Qh, dHG);
+      hourglass::viscous_forces_lanes(qm, c, rho, cbrtV, g, Qs, dt, Qh, dHG, dHG_old);
     }
     hourglass::add_hourglass_forces_lanes(Qh, gamma, fe);
 
@@ -146,14 +153,19 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
       }
       if (dt == 0 && !st.initial_dt.empty()) st.initial_dt[e] = dte[l];
       const int cause = time_step_erosion(erode_cause[l], erode_tsmin, dt, dte[l]);
+      if (cause > 0) {
+        st.internal_energy[e] += dIE_old[l];
+        st.hourglass_energy[e] += dHG_old[l];
+        r.internal_energy += dIE_old[l];
+        r.hourglass_energy += dHG_old[l];
+        r.bulk_viscous_energy += dQ_old[l];
+        erode_element(st, e, blk.element_id[e], cause, 1, r.eroded, r.eroded_energy);
+        continue;
+      }
       st.internal_energy[e] += dIE[l];
       st.hourglass_energy[e] += dHG[l];
       r.internal_energy += dIE[l];
       r.hourglass_energy += dHG[l];
-      if (cause > 0) {
-        erode_element(st, e, blk.element_id[e], cause, 1, r.eroded, r.eroded_energy);
-        continue;
-      }
       material.commit(e, l);
       st.volume[e] = V[l];
       for (int i = 0; i < 6; ++i) st.stress[6 * std::size_t(e) + i] = s[i][l];

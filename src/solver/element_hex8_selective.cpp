@@ -110,7 +110,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     }
 
     double fe[3][8] = {};
-    double dIE = 0;
+    double dIE = 0, dIE_old = 0;  // dIE_old: the previous stress's half, all an eroding element books
     int erode_cause = 0;  // > 0: a point failed (ErosionCause of the first)
     for (int g = 0; g < 8; ++g) {
       double D[6], W[9];
@@ -139,6 +139,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
       double s_avg[6];
       for (int i = 0; i < 6; ++i) s_avg[i] = 0.5 * (s_old[i] + s[i]);
       dIE += detj[g] * element::stress_power(s_avg, D) * dt;
+      dIE_old += 0.5 * detj[g] * element::stress_power(s_old, D) * dt;
       const double p3 = (s[0] + s[1] + s[2]) / 3.0;
       for (int k = 0; k < 8; ++k) {
         const double bx = B[g][0][k], by = B[g][1][k], bz = B[g][2][k];
@@ -154,12 +155,15 @@ void selective(Material& material, const model::Model& model, const model::Eleme
       continue;
     }
     erode_cause = time_step_erosion(erode_cause, erode_tsmin, dt, dte);
-    st.internal_energy[e] += dIE;
-    r.internal_energy += dIE;
     if (erode_cause > 0) {
+      st.internal_energy[e] += dIE_old;
+      r.internal_energy += dIE_old;
+      r.bulk_viscous_energy += -0.5 * st.bulk_q[e] * trDbar * V * dt;
       erode_element(st, e, blk.element_id[e], erode_cause, 8, r.eroded, r.eroded_energy);
       continue;
     }
+    st.internal_energy[e] += dIE;
+    r.internal_energy += dIE;
     const double q = bulk_viscosity(rho, Le, c, trDbar, q1, q2);
     r.bulk_viscous_energy += -0.5 * (st.bulk_q[e] + q) * trDbar * V * dt;  // trapezoid, as in ELFORM 1
     st.bulk_q[e] = q;

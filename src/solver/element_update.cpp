@@ -4,6 +4,7 @@
 
 #include "material/composite_damage.hpp"
 #include "solver/assumed_strain_hourglass.hpp"
+#include "solver/directional_step.hpp"
 #include "solver/element_families.hpp"
 
 namespace plyimpact::solver {
@@ -28,6 +29,7 @@ BlockState initial_block_state(const model::Model& model, std::size_t b) {
   st.stress.assign(6 * blk.size() * blk.points(), 0.0);
   if (blk.hourglass() != model::HourglassKind::None) st.hourglass.assign(12 * blk.size(), 0.0);
   st.hourglass_moduli = hourglass_moduli(model, blk);
+  st.step_wave_speed = step_wave_speeds(model, blk);
   st.bulk_q.assign(blk.size(), 0.0);
   st.step_q.assign(blk.size(), 0.0);
   st.internal_energy.assign(blk.size(), 0.0);

@@ -32,6 +32,15 @@ inline int time_step_erosion(int cause, double erode_tsmin, double dt, double el
 // Deletes element e (block index; id: its element id) with `points` integration points: zero
 // stress; appended to `eroded` with its cause, and the internal + hourglass energy it holds
 // (already including this cycle's) added to `eroded_energy`.
+//
+// What "this cycle's" energy is: only the work of the previous cycle's stress (and hourglass and
+// bulk-viscous forces) over this step, half of the trapezoid rule. Central differences pair the
+// trapezoid work of a step, (f^n + f^{n+1}) . dx^{n+1/2} / 2, with the kinetic energy that f^n
+// and f^{n+1} each give their half steps; an element eroded in the pass that computes f^{n+1}
+// never applies that force, so its half f^{n+1} . dx / 2 would be booked without a kinetic
+// counterpart: an error per erosion proportional to the step (the test ErosionHourglassEnergy
+// measures it).
+
 inline void erode_element(BlockState& st, Index e, Index id, int cause, int points,
                           std::vector<std::pair<Index, int>>& eroded, double& eroded_energy) {
   std::fill_n(&st.stress[6 * std::size_t(points) * std::size_t(e)], 6 * points, 0.0);

@@ -8,6 +8,7 @@ void BlockState::visit_state(StateVisitor& sv) {
   sv.fixed_array("stress", stress);
   sv.fixed_array("hourglass", hourglass);
   sv.fixed_array("hourglass_moduli", hourglass_moduli);
+  sv.fixed_array("step_wave_speed", step_wave_speed);
   sv.fixed_array("bulk_q", bulk_q);
   sv.fixed_array("step_q", step_q);
   sv.fixed_array("internal_energy", internal_energy);

@@ -22,6 +22,8 @@ struct BlockState {
   // Hourglass moduli (solver/assumed_strain_hourglass): (num_elements) IHQ 4/5, (num_elements, 6) IHQ 6
   // E_x', E_y', E_z', G_x'y', G_y'z', G_z'x'; empty otherwise.
   std::vector<double> hourglass_moduli;
+  // (num_elements) wave speed of the stable step, m/s (solver/directional_step); empty: the material's.
+  std::vector<double> step_wave_speed;
   std::vector<double> bulk_q;            // (num_elements) last bulk-viscosity pressure q, Pa (trapezoid work)
   std::vector<double> step_q;            // (num_elements) Q held for the stable step, m/s (element_update step_q)
   std::vector<double> internal_energy;   // (num_elements) J, stress work incl. nothing of q
