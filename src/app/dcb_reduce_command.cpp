@@ -26,7 +26,10 @@ const char* const kDcbReduceUsage =
     "                            columns, default m), --force-unit U (load column, default N),\n"
     "                            --load/--opening/--crack NAME (columns; default load, opening,\n"
     "                            crack_length), --all-rows (every row is a propagation point; default:\n"
-    "                            the rows where the crack length grows). Writes to DIR (default\n"
+    "                            the rows where the crack length grows), --smooth N (load and opening\n"
+    "                            averaged over the 2N + 1 rows around each row first, as a load cell's\n"
+    "                            filter: for simulated records, whose rows carry the arms' vibration;\n"
+    "                            default 0). Writes to DIR (default\n"
     "                            results/<data>_dcb): dcb_reduction.csv (SI: a m, P N, delta m, C m/N,\n"
     "                            G J/m^2), dcb_fits.json, dcb_r_curve.png\n";
 
@@ -38,6 +41,7 @@ struct DcbOptions {
   std::string data, width, thickness, length_unit = "m", force_unit = "N";
   fracture::DcbColumns columns;
   fracture::PropagationRule rule = fracture::PropagationRule::crack_growth;
+  std::string smooth = "0";
   std::string out_dir;
 };
 
@@ -60,6 +64,7 @@ bool parse_options(const std::vector<std::string>& args, DcbOptions& o, std::ost
     else if (a == "--opening") ok = value(o.columns.opening);
     else if (a == "--crack") ok = value(o.columns.crack);
     else if (a == "-o" || a == "--output") ok = value(o.out_dir);
+    else if (a == "--smooth") ok = value(o.smooth);
     else if (a == "--all-rows") o.rule = fracture::PropagationRule::all_rows;
     else if (o.data.empty() && !a.starts_with("-")) o.data = a;
     else {
@@ -76,6 +81,19 @@ bool parse_options(const std::vector<std::string>& args, DcbOptions& o, std::ost
     return false;
   }
   return true;
+}
+
+// --smooth N: rows on each side of the moving average (fracture::smoothed_record).
+int smooth_rows(const std::string& text) {
+  std::size_t used = 0;
+  int n = -1;
+  try {
+    n = std::stoi(text, &used);
+  } catch (const std::exception&) {
+  }
+  if (used != text.size() || n < 0 || n > 1000)
+    throw InputError(msg() << "--smooth " << text << ": not a row count; allowed an integer from 0 to 1000");
+  return n;
 }
 
 double unit_factor(const std::string& option, const std::string& text, u::Dimension d) {
@@ -143,6 +161,7 @@ void write_outputs(const fracture::DcbReduction& r, const std::vector<fracture::
   j["thickness"] = spec.thickness;
   j["propagation_rule"] = o.rule == fracture::PropagationRule::all_rows ? "all rows" : "rows where the crack length grows";
   j["propagation_points"] = r.points.size();
+  j["smooth_rows"] = smooth_rows(o.smooth);
   output::Json& mbt = j["MBT"] = output::Json::object();
   mbt["fit"] = fit_json(r.mbt_fit, "a", "C^(1/3)");
   mbt["x_intercept"] = r.delta_x_intercept;
@@ -212,7 +231,8 @@ int dcb_reduce_command(const std::vector<std::string>& args, std::ostream& out, 
   spec.width = positive_length("--width", o.width, units.length);
   spec.thickness = positive_length("--thickness", o.thickness, units.length);
   const fracture::DcbRecord record = fracture::read_dcb_record(o.data, o.columns, units);
-  const std::vector<fracture::DcbRow> rows = fracture::propagation_points(record, o.rule);
+  const std::vector<fracture::DcbRow> rows =
+      fracture::propagation_points(fracture::smoothed_record(record, smooth_rows(o.smooth)), o.rule);
   std::vector<fracture::DcbPoint> points;
   for (const auto& row : rows) points.push_back(row.point);
   const fracture::DcbReduction r = fracture::reduce_dcb(points, spec);

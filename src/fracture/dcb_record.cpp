@@ -121,6 +121,19 @@ DcbRecord read_dcb_record(const std::string& path, const DcbColumns& columns, co
   return parse_dcb_record(s.str(), path, columns, units);
 }
 
+DcbRecord smoothed_record(const DcbRecord& record, int half_width) {
+  DcbRecord out = record;
+  const long n = long(record.rows.size());
+  for (long i = 0; i < n; ++i) {
+    const long lo = std::max(0L, i - half_width), hi = std::min(n - 1, i + half_width);
+    double P = 0, delta = 0;
+    for (long j = lo; j <= hi; ++j) P += record.rows[j].point.P, delta += record.rows[j].point.delta;
+    out.rows[i].point.P = P / double(hi - lo + 1);
+    out.rows[i].point.delta = delta / double(hi - lo + 1);
+  }
+  return out;
+}
+
 std::vector<DcbRow> propagation_points(const DcbRecord& record, PropagationRule rule) {
   std::vector<DcbRow> out;
   for (std::size_t i = 0; i < record.rows.size(); ++i) {

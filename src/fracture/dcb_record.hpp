@@ -48,6 +48,13 @@ DcbRecord parse_dcb_record(std::string_view text, const std::string& file_label,
                            const DcbUnits& units);
 DcbRecord read_dcb_record(const std::string& path, const DcbColumns& columns, const DcbUnits& units);
 
+/// The record with load and opening replaced by their centred moving average over 2 half_width + 1
+/// rows (fewer at the ends); crack lengths unchanged. A simulated record carries the arms' vibration
+/// row to row (about +-10 % of the load at 5 us rows on the shipped DCB), and a propagation point is
+/// the one row where the front passed a pair, so which phase of the vibration it samples is chance; a
+/// test machine's load cell and filter average it out. half_width 0 returns the record unchanged.
+DcbRecord smoothed_record(const DcbRecord& record, int half_width);
+
 /// The propagation points of `record` by `rule`, in order, with their lines.
 /// @throws InputError when the crack length decreases anywhere (file:line), when a propagation point
 /// has a non-positive load or opening (file:line), or when fewer than 3 points remain

@@ -11,12 +11,17 @@
 // in pure mode I (test_mixed_mode_law); corrected beam theory (Williams 1989, test_dcb.cpp) for the
 // compliance before the crack grows.
 // Tolerances:
-//   - mean G_Ic by MBT, CC and MCC within 5 % of ERATEN (the requirement). What moves it:
-//     the crack length advances in 1 mm jumps and a propagation point is the first history row after
-//     a jump, where the load sits at the bottom of its saw-tooth (a 1 mm jump at a + Delta ~ 33 mm
-//     lowers P by ~3 %, so G = 3 P delta / (2 b (a + Delta)) by up to ~3 %); the arms' vibration
-//     scatters single points by up to ~8 %, averaged over ~18 points. The process zone ahead of the
-//     d = 1 front is a constant offset of a, which MBT's Delta and CC/MCC's fits absorb.
+//   - mean G_Ic by MBT, CC and MCC within 5 % of ERATEN (the requirement), from the record
+//     with load and opening averaged over 5 rows (25 us, `dcb-reduce --smooth 2`). Why averaged: the
+//     load changes by up to +-10 % from one 5 us row to the next (the arms' vibration), and a
+//     propagation point is the single row where the front passed a pair. Unaveraged, the reduction
+//     sampled that vibration by chance: -3.8 to -4.1 % at TSSFAC 0.3-0.8 and -7.4 % at 0.9, where
+//     the histories agree within 0.3 % and only the last propagation point fell one row later, on
+//     the other phase (MBT's Delta moved from 5.3 to 7.1 mm). Averaged: -0.8 to -1.0 % at TSSFAC 0.6,
+//     0.8 and 0.9, R^2 0.996; averaging over 3 or 9 rows gives -0.7 to -1.4 %. What remains: the
+//     crack length advances in 1 mm jumps and a propagation point is the first row after a jump, at
+//     the bottom of the load's saw-tooth (up to ~3 % on a single point). The process zone ahead of
+//     the d = 1 front is a constant offset of a, which MBT's Delta and CC/MCC's fits absorb.
 //   - compliance delta / P within 5 % of beam theory (as in test_dcb.cpp: Williams' correction
 //     agrees with 2-D elasticity to ~2 %; the rest is the load's vibration), from the rows with
 //     0.3 P_c < P < 0.8 P_c.
@@ -38,6 +43,10 @@ namespace plyimpact {
 namespace {
 
 using namespace dcb_ci;
+
+// Load and opening averaged over 5 rows (25 us) around each row, as `dcb-reduce --smooth 2`; see
+// the header.
+constexpr int kSmoothRows = 2;
 
 double mean(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0) / double(v.size()); }
 
@@ -66,7 +75,8 @@ TEST(DcbScene, D5528ReductionOfTheSimulatedHistoryRecoversERATEN) {
   }
   const double c_beam = 8 * std::pow(kA0 + kSegment / 2 + williams_delta(), 3) / (kE11 * kWidth * std::pow(kArm, 3));
 
-  const auto points = fracture::propagation_points(record, fracture::PropagationRule::crack_growth);
+  const auto points =
+      fracture::propagation_points(fracture::smoothed_record(record, kSmoothRows), fracture::PropagationRule::crack_growth);
   std::vector<fracture::DcbPoint> pts;
   for (const auto& r : points) pts.push_back(r.point);
   const fracture::DcbReduction red = fracture::reduce_dcb(pts, {kWidth, 2 * kArm});
