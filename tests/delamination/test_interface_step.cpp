@@ -1,16 +1,21 @@
 // The interface stiffness in the time step: the seed's CN = 100 kN/mm^3 (Table 8.6) between
 // 0.25 mm T800S/M21 plies (Table 8.4), against the ply element's own step.
-//   element: dt_e = L / c, L = V / A_max (hex8 helpers, as the solver), c = sqrt(max rho c^2 / rho)
-//            over all directions of the orthotropic stiffness (material::max_wave_modulus);
+//   element: dt_e = L / c_step, L = V / A_max (hex8 helpers, as the solver), c_step the smaller of
+//            the material's fastest wave (material::max_wave_modulus) and the element's own
+//            constant-strain limit L omega / 2 (solver/directional_step): on a 0.25 mm ply the
+//            thickness wave sqrt(C33 / rho);
 //   pair   : an interface node of a one-element-thick ply carries rho a^2 h / 2 on each side
 //            (4 elements x rho V / 8) and the spring CN a^2, so dt_p = 2 / omega = sqrt(rho h / CN),
 //            whatever the in-plane size a. The kernel's stable_step() must give that.
 //   both   : the stiffnesses add, and the solver combines the two bounds as
 //            1 / dt^2 = 1 / dt_e^2 + 1 / dt_p^2 (Weyl's inequality, Solver::combined_step).
-// The ratio and the combined factor are printed for `check`; the run is stable at TSSFAC when the
-// combined factor exceeds TSSFAC.
+// The ratio and the combined factor are printed. The combined step is stable by construction
+// (Weyl); what is asserted is the claim of the interface's warning rule: at the seed's CN the
+// interface shares control of the step but does not halve it (no warning on the default scene's
+// plies, one or two elements through each).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -18,13 +23,14 @@
 #include "element/hex8.hpp"
 #include "law_paths.hpp"
 #include "material/elastic.hpp"
+#include "solver/directional_step.hpp"
 
 namespace plyimpact::cohesive {
 namespace {
 
 constexpr double kRho = 1550;  // kg/m^3, Table 8.4
 
-double t800s_m21_wave_modulus() {
+material::Stiffness6 t800s_m21_stiffness() {
   material::OrthotropicConstants m;
   m.EA = 157e9;
   m.EB = m.EC = 8.5e9;
@@ -32,17 +38,22 @@ double t800s_m21_wave_modulus() {
   m.PRCB = 0.53;
   m.GAB = m.GCA = 4.2e9;
   m.GBC = 2.2e9;
-  return material::max_wave_modulus(material::orthotropic_stiffness(m));
+  return material::orthotropic_stiffness(m);
 }
 
-// Stable step of an a x a x h brick, as the element pass computes it (no bulk viscosity).
+// Stable step of an a x a x h brick, fibre along x, as the element pass computes it (no bulk
+// viscosity): L over the slower of the two wave speeds.
 double element_step(double a, double h) {
-  element::NodeVec x;
+  element::NodeVec x, b;
   const double corner[8][3] = {{0, 0, 0}, {a, 0, 0}, {a, a, 0}, {0, a, 0}, {0, 0, h}, {a, 0, h}, {a, a, h}, {0, a, h}};
   for (int k = 0; k < 8; ++k)
     for (int i = 0; i < 3; ++i) x[i][k] = corner[k][i];
-  const double L = element::hex8_volume(x) / element::hex8_max_face_area(x);
-  return L / std::sqrt(t800s_m21_wave_modulus() / kRho);
+  const double V = element::hex8_mean_gradient(x, b);
+  const double L = V / element::hex8_max_face_area(x);
+  const material::Stiffness6 C = t800s_m21_stiffness();
+  const double c_material = std::sqrt(material::max_wave_modulus(C) / kRho);
+  const double c_element = 0.5 * L * std::sqrt(8 * solver::constant_strain_eigenvalue(C, b) / kRho);
+  return L / std::min(c_material, c_element);
 }
 
 // The kernel on a 3 x 3 patch of interface pairs of an a-grid, one element per ply of thickness h.
@@ -70,7 +81,6 @@ double pair_step(double a, double h, const TractionLawParams& law) {
 
 TEST(InterfaceStep, SeedCnAgainstThePlyElementStep) {
   const auto law = test::table_8_6_option9();  // CN = 1e14 Pa/m
-  const double tssfac = 0.9;                   // LS-DYNA's default
   for (int per_ply : {1, 2}) {
     const double h = 0.25e-3 / per_ply;
     for (double a : {2.5e-3, 0.5e-3}) {
@@ -80,13 +90,12 @@ TEST(InterfaceStep, SeedCnAgainstThePlyElementStep) {
       EXPECT_NEAR(dt_p, std::sqrt(kRho * h / law.CN), 1e-12 * dt_p);
       const double combined = 1 / std::sqrt(1 / (dt_e * dt_e) + 1 / (dt_p * dt_p));
       std::printf("elements per ply %d, a = %.2f mm: element step %.4g s, pair step %.4g s, ratio %.3f, "
-                  "combined step %.4f of the element step (TSSFAC %.2f %s)\n",
-                  per_ply, a * 1e3, dt_e, dt_p, dt_p / dt_e, combined / dt_e, tssfac,
-                  combined / dt_e > tssfac ? "stable" : "NOT stable: the interface needs a smaller step");
-      // The claim `check` relies on: at the seed's stiffness the combined step stays above TSSFAC
-      // times the element step, so the default TSSFAC keeps the run stable (thinner elements
-      // make the pair relatively softer: dt_p grows as sqrt(h), dt_e as h).
-      EXPECT_GT(combined / dt_e, tssfac);
+                  "combined step %.4f of the element step\n",
+                  per_ply, a * 1e3, dt_e, dt_p, dt_p / dt_e, combined / dt_e);
+      // The warning rule's claim (interface_tiebreaks.cpp): at the seed's stiffness the interface
+      // does not halve the step (thinner elements make the pair relatively softer: dt_p grows as
+      // sqrt(h), dt_e as h).
+      EXPECT_GT(combined / dt_e, 0.5);
     }
   }
 }
