@@ -22,6 +22,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "cohesive/point_histories.hpp"
@@ -40,6 +41,9 @@ struct TiebreakPairsSpec {
   std::vector<Index> faces;      // (num_faces, 4) pair indices, counter-clockwise seen from the upper ply
                                  // (a triangle repeats its last pair); empty: fixed `normals`
   std::vector<double> normals;   // (num_pairs, 3) unit normals pointing from the lower to the upper ply
+  // m: a separated pair pressed deeper than this is taken as open (released), as a penalty contact
+  // releases a node behind its release depth; infinite: never.
+  double release_depth = std::numeric_limits<double>::infinity();
 };
 
 // Interface faces as quads of pair indices from quads of lower-side node indices (faces whose normal
@@ -111,6 +115,7 @@ class TiebreakPairs {
   std::vector<Index> pair_face_;
   std::vector<double> face_vector_;        // (num_faces, 3) vector areas of the last refresh (scratch)
   int normal_refresh_interval_ = 1;
+  double release_depth_;  // m, TiebreakPairsSpec::release_depth
   std::uint64_t passes_ = 0;               // apply() calls so far (when the normals are refreshed)
   bool nodes_distinct_ = true;
 

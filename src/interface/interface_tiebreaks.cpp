@@ -7,6 +7,8 @@
 
 #include <omp.h>
 
+#include "element/hex8.hpp"
+
 namespace plyimpact::interface {
 
 namespace {
@@ -98,6 +100,32 @@ cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, co
   return elements;
 }
 
+// A separated pair pressed deeper than this fraction of the thinnest element on either side of its
+// interface is released (cohesive::TiebreakPairsSpec::release_depth): the fraction LS-DYNA's
+// penalty contacts use by default for solids (PENMAX 0.4 of the element thickness).
+static constexpr double kReleaseDepthFraction = 0.4;
+
+// kReleaseDepthFraction times the smallest characteristic length V / A_max (for a ply element, its
+// thickness) of the elements with a node on the interface, at the reference geometry.
+static double interface_release_depth(const model::Model& model, const model::Interface& itf) {
+  std::vector<char> on(model.num_nodes(), 0);
+  for (const auto* nodes : {&itf.lower_nodes, &itf.upper_nodes})
+    for (Index node : *nodes) on[std::size_t(node)] = 1;
+  double length = std::numeric_limits<double>::infinity();
+  for (const auto& blk : model.blocks) {
+    if (blk.rigid) continue;
+    for (std::size_t e = 0; e < blk.size(); ++e) {
+      const Index* conn = &blk.conn[8 * e];
+      if (!std::any_of(conn, conn + 8, [&](Index n) { return on[std::size_t(n)] != 0; })) continue;
+      element::NodeVec x;
+      for (int k = 0; k < 8; ++k)
+        for (int i = 0; i < 3; ++i) x[i][k] = model.X[3 * std::size_t(conn[k]) + i];
+      length = std::min(length, element::hex8_volume(x) / element::hex8_max_face_area(x));
+    }
+  }
+  return kReleaseDepthFraction * length;
+}
+
 cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const model::Interface& itf) {
   cohesive::TiebreakPairsSpec spec;
   spec.lower = itf.lower_nodes;
@@ -105,6 +133,7 @@ cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const mo
   spec.area = itf.area;
   spec.faces = cohesive::pair_faces_from_segments(itf.lower_nodes, itf.lower_segments);
   spec.normals = itf.normal;
+  spec.release_depth = interface_release_depth(model, itf);
   cohesive::TiebreakPairs pairs(itf.tiebreak->law, std::move(spec), model.X.data(), model.mass.data());
   const std::vector<char> separated = precrack_pairs(model, itf);
   for (std::size_t p = 0; p < separated.size(); ++p)

@@ -132,31 +132,40 @@ TEST(TiebreakKernel, TwoMassesConserveMomentumAndEnergyThroughSeparationAndFrict
 }
 
 // A separated pair stands for two faces in contact only while its nodes are over each other's
-// tributary patch (|u_t| <= sqrt(A) / 2). Independent answer: the penalty K_n A |u_n| inside that
-// reach, nothing beyond it (the partner then lies over another node's patch, and the normal opening
-// of a long slide on a turned normal is no penetration: the default scene's energy jumps came from
-// such a pair, 29 mm apart, reading 29 um of compression).
-TEST(TiebreakKernel, SeparatedPairBeyondItsReachCarriesNothing) {
+// tributary patch (|u_t| <= sqrt(A) / 2) and not pressed deeper than its release depth. Independent
+// answer: the penalty K_n A |u_n| inside those limits, nothing beyond them (beyond, the "normal
+// opening" is a long slide or a separation projected on a turned normal: the default scene's energy
+// jumps came from a pair 29 mm apart reading 29 um of compression, and from one 1.25 mm apart
+// reading 0.43 mm on a normal 58 degrees off).
+TEST(TiebreakKernel, SeparatedPairCarriesContactOnlyWithinReachAndReleaseDepth) {
   const auto p = test::table_8_6_option9();
   const double area = 1e-6, m = 1e-6;  // reach: 0.5 mm
   const double x0[6] = {0, 0, 0, 0, 0, 0}, mass[2] = {m, m}, v[6] = {};
-  TiebreakPairs pairs(p, single_pair(area), x0, mass);
+  TiebreakPairsSpec spec = single_pair(area);
+  spec.release_depth = 2e-6;  // m
+  TiebreakPairs pairs(p, spec, x0, mass);
   double f[6] = {};
   const double open[6] = {0, 0, 0, 0, 0, 1e-3};  // 1 mm apart: far beyond the law's final opening
   pairs.apply(open, v, f, 1e-9);
   ASSERT_EQ(pairs.damage()[0], 1.0);
-  const double depth = 1e-6;  // m of penetration
   const double kn = pairs.law().kn;
-  for (double slide : {0.4e-3, 0.6e-3}) {
-    const double x[6] = {0, 0, 0, slide, 0, -depth};
+  struct Case {
+    double slide, depth;  // m
+    bool carries;
+  };
+  for (const Case c : {Case{0.4e-3, 1e-6, true}, Case{0.6e-3, 1e-6, false}, Case{0.0, 1.9e-6, true},
+                       Case{0.0, 2.1e-6, false}}) {
+    const double x[6] = {0, 0, 0, c.slide, 0, -c.depth};
     std::fill(f, f + 6, 0.0);
     pairs.apply(x, v, f, 1e-9);
-    const bool within = slide * slide <= 0.25 * area;
-    const double expected = within ? kn * area * depth : 0.0;  // N, pushing the upper node up
-    EXPECT_NEAR(f[5], expected, 1e-9 * kn * area * depth) << "slide " << slide << " m";
-    EXPECT_NEAR(pairs.elastic_energy(), within ? 0.5 * kn * area * depth * depth : 0.0, 1e-6 * kn * area * depth * depth)
-        << "slide " << slide << " m";
+    const double expected = c.carries ? kn * area * c.depth : 0.0;  // N, pushing the upper node up
+    EXPECT_NEAR(f[5], expected, 1e-9 * kn * area * c.depth) << "slide " << c.slide << " m, depth " << c.depth << " m";
+    EXPECT_NEAR(pairs.elastic_energy(), c.carries ? 0.5 * kn * area * c.depth * c.depth : 0.0,
+                1e-6 * kn * area * c.depth * c.depth)
+        << "slide " << c.slide << " m, depth " << c.depth << " m";
   }
+  spec.release_depth = 0;
+  EXPECT_THROW(TiebreakPairs(p, spec, x0, mass), InputError);
 }
 
 // The pair's stable step is the true limit of central difference for the pair alone: a small
