@@ -86,19 +86,21 @@ void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
 }
 
 // A separated pair is contact between two faces only while its nodes lie over each other. It is
-// taken as open when they have slid apart by more than half its tributary width (the partner has
-// left the node's own patch of the interface) or when it is pressed deeper than the release depth.
+// taken as open when they have slid apart by more than its tributary width sqrt(A) (one element
+// width on a regular grid: the node has left the faces around its partner, which the plies' surface
+// contact skips for a separated pair, contact/bonded_interfaces) or when it is pressed deeper than
+// the release depth.
 // Why: its "normal opening" is the projection of the pair's separation on a normal that the faces
 // around it, distorted or eroded, may have turned. In the default scene a pair 29 mm apart read
 // 29 um of compression on a tilted normal and its penalty threw 0.27 J into the nodes, and a pair
-// 1.25 mm apart read 0.43 mm of compression on a normal 58 degrees off the interface's and held
-// 58 J (energy ratio 0.995 -> 4.1 within four cycles). No ply presses 0.4 of its thickness into
+// 1.25 mm apart (within reach) read 0.43 mm of compression on a normal 58 degrees off the
+// interface's and held 58 J (energy ratio 0.995 -> 4.1 within four cycles). No ply presses 0.4 of its thickness into
 // its neighbour with its elements intact. Contact between separated plies beyond that is the job of
 // a surface contact (eroding single surface over the plies), which sees the real geometry.
 namespace {
 [[gnu::always_inline]] inline void open_beyond_reach(const PointHistory& h, double area, double release_depth,
                                                      double u[3]) {
-  if (h.damage >= 1 && (u[1] * u[1] + u[2] * u[2] > 0.25 * area || u[0] < -release_depth)) u[0] = std::max(u[0], 0.0);
+  if (h.damage >= 1 && (u[1] * u[1] + u[2] * u[2] > area || u[0] < -release_depth)) u[0] = std::max(u[0], 0.0);
 }
 }  // namespace
 

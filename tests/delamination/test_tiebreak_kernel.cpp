@@ -131,15 +131,15 @@ TEST(TiebreakKernel, TwoMassesConserveMomentumAndEnergyThroughSeparationAndFrict
               dt, b.max_drift, b.bound, b.scheme, b.kinks, pairs.dissipated_energy(), p.ERATEN * area);
 }
 
-// A separated pair stands for two faces in contact only while its nodes are over each other's
-// tributary patch (|u_t| <= sqrt(A) / 2) and not pressed deeper than its release depth. Independent
+// A separated pair stands for two faces in contact only while its nodes have slid apart by less
+// than its tributary width (|u_t| <= sqrt(A)) and it is not pressed deeper than its release depth. Independent
 // answer: the penalty K_n A |u_n| inside those limits, nothing beyond them (beyond, the "normal
 // opening" is a long slide or a separation projected on a turned normal: the default scene's energy
 // jumps came from a pair 29 mm apart reading 29 um of compression, and from one 1.25 mm apart
 // reading 0.43 mm on a normal 58 degrees off).
 TEST(TiebreakKernel, SeparatedPairCarriesContactOnlyWithinReachAndReleaseDepth) {
   const auto p = test::table_8_6_option9();
-  const double area = 1e-6, m = 1e-6;  // reach: 0.5 mm
+  const double area = 1e-6, m = 1e-6;  // reach: 1 mm
   const double x0[6] = {0, 0, 0, 0, 0, 0}, mass[2] = {m, m}, v[6] = {};
   TiebreakPairsSpec spec = single_pair(area);
   spec.release_depth = 2e-6;  // m
@@ -153,7 +153,7 @@ TEST(TiebreakKernel, SeparatedPairCarriesContactOnlyWithinReachAndReleaseDepth) 
     double slide, depth;  // m
     bool carries;
   };
-  for (const Case c : {Case{0.4e-3, 1e-6, true}, Case{0.6e-3, 1e-6, false}, Case{0.0, 1.9e-6, true},
+  for (const Case c : {Case{0.9e-3, 1e-6, true}, Case{1.1e-3, 1e-6, false}, Case{0.0, 1.9e-6, true},
                        Case{0.0, 2.1e-6, false}}) {
     const double x[6] = {0, 0, 0, c.slide, 0, -c.depth};
     std::fill(f, f + 6, 0.0);
