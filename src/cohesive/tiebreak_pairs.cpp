@@ -99,8 +99,9 @@ void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
 // a surface contact (eroding single surface over the plies), which sees the real geometry.
 namespace {
 [[gnu::always_inline]] inline void open_beyond_reach(const PointHistory& h, double area, double release_depth,
-                                                     double u[3]) {
-  if (h.damage >= 1 && (u[1] * u[1] + u[2] * u[2] > area || u[0] < -release_depth)) u[0] = std::max(u[0], 0.0);
+                                                     bool released, double u[3]) {
+  if (h.damage >= 1 && (released || u[1] * u[1] + u[2] * u[2] > area || u[0] < -release_depth))
+    u[0] = std::max(u[0], 0.0);
 }
 }  // namespace
 
@@ -184,6 +185,7 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
   }
 
   history_.assign(n);
+  released_.assign(n, 0);
   sums_.assign((n + kChunk - 1) / kChunk);
   set_nodal_mass(nodal_mass);
 }
@@ -238,7 +240,7 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
         double u[3];
         local_opening(x, p, fr, u);
         PointHistory h = history_.load(p);
-        open_beyond_reach(h, pairs_[p].area, release_depth_, u);
+        open_beyond_reach(h, pairs_[p].area, release_depth_, released_[p] != 0, u);
         PointResponse r;
         traction_update(law_, u, h, r);
         history_.store(p, h);
@@ -283,7 +285,7 @@ void TiebreakPairs::sample(const double* x, PairSample* out) const {
     PairSample& s = out[p];
     local_opening(x, p, fr, s.opening);
     const PointHistory h = history_.load(p);
-    open_beyond_reach(h, pairs_[p].area, release_depth_, s.opening);
+    open_beyond_reach(h, pairs_[p].area, release_depth_, released_[p] != 0, s.opening);
     sample_point(law_, h, s);
   }
 }
@@ -294,6 +296,7 @@ void TiebreakPairs::visit_state(StateVisitor& visitor) {
   visitor.scalar("dissipated_energy", dissipated_energy_);
   visitor.array("normal", normals_);
   visitor.scalar("passes", passes_);
+  visitor.fixed_array("released", released_);
 }
 
 }  // namespace plyimpact::cohesive

@@ -191,7 +191,7 @@ model::Subsystem InterfaceTiebreaks::describe(const model::Model& model) {
   return {"delamination", true, d.str()};
 }
 
-InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_element) {
+InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_element) : model_(&model) {
   stable_step_ = std::numeric_limits<double>::infinity();
   for (const auto& itf : model.interfaces) {
     if (!itf.tiebreak) continue;
@@ -229,6 +229,27 @@ InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_elem
       << dt_element << " s, so the step is " << solver::combined_step(dt_element, stable_step_)
       << " s before TSSFAC (a CN lower by a factor k lengthens the interface's bound by sqrt(k))";
     warnings_.push_back(w.str());
+  }
+}
+
+void InterfaceTiebreaks::on_erosion(const solver::AliveMask& alive, const std::vector<double>& /*x*/) {
+  if (pairs_.empty()) return;
+  const model::Model& model = *model_;
+  std::vector<char> held(model.num_nodes(), 0);  // 1: some live deformable element holds the node
+  for (std::size_t b = 0; b < model.blocks.size(); ++b) {
+    const auto& blk = model.blocks[b];
+    if (blk.rigid) continue;
+    const std::vector<char>& mask = alive[b];
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      if (mask.empty() || mask[e])
+        for (int k = 0; k < 8; ++k) held[std::size_t(blk.conn[8 * e + k])] = 1;
+  }
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const model::Interface& itf = *std::find_if(model.interfaces.begin(), model.interfaces.end(),
+                                                [&](const model::Interface& f) { return f.id == ids_[i]; });
+    for (std::size_t p = 0; p < itf.num_pairs(); ++p)
+      if (!pairs_[i].released(p) && (!held[std::size_t(itf.lower_nodes[p])] || !held[std::size_t(itf.upper_nodes[p])]))
+        pairs_[i].release_pair(p);
   }
 }
 

@@ -42,6 +42,8 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
   std::vector<std::string> history_columns() const override;
   void history_values(std::vector<double>& row) const override;
   void visit_state(StateVisitor& visitor) override;
+  // Releases for good every pair with no live element left around its lower or its upper node.
+  void on_erosion(const solver::AliveMask& alive, const std::vector<double>& x) override;
 
   const std::vector<cohesive::TiebreakPairs>& pairs() const { return pairs_; }
   const std::vector<int>& interface_ids() const { return ids_; }  // 1-based number of each pairs_ entry
@@ -57,6 +59,7 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
  private:
   std::vector<cohesive::TiebreakPairs> pairs_;
   std::vector<int> ids_;
+  const model::Model* model_ = nullptr;  // the element blocks, for on_erosion
   std::vector<InterfaceLayout> layouts_;  // (columns_.size()) for the outputs, in id order
   std::vector<cohesive::CohesiveElements> cohesive_;
   std::vector<int> cohesive_ids_;

@@ -7,12 +7,14 @@
 //  - bad input is refused with file:line:col, the key and what is allowed.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
+#include "interface/interface_tiebreaks.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact {
@@ -72,6 +74,52 @@ TEST(InterfaceScene, TiebreakKeepsPairsApartWithTheirOwnPlysMass) {
   double total = 0;
   for (double v : m.mass) total += v;
   EXPECT_NEAR(total, 1600 * 4e-3 * 2e-3 * 1e-3, 1e-12);
+}
+
+// A pair whose ply is gone on one side joins nothing: once every element around its upper node has
+// eroded it is released for good (no force, whatever the nodes do), while its neighbours, whose
+// nodes keep a live element, stay. Independent answer: the mesh's own connectivity (a corner node of
+// a ply belongs to one element of that ply).
+TEST(InterfaceScene, PairsWhosePlyErodedAwayAreReleased) {
+  const model::Model m = build(scene("{select: angle-change, model: tiebreak, " + kLaw + "}"));
+  ASSERT_EQ(m.interfaces.size(), 1u);
+  const auto& itf = m.interfaces[0];
+  interface::InterfaceTiebreaks tiebreaks(m, 1.0);
+  std::size_t upper_block = m.blocks.size();
+  for (const auto& part : m.parts)
+    if (part.name == "ply_2_90") upper_block = std::size_t(part.block);
+  ASSERT_LT(upper_block, m.blocks.size());
+  const auto& blk = m.blocks[upper_block];
+  solver::AliveMask alive(m.blocks.size());
+  alive[upper_block].assign(blk.size(), 1);
+  std::size_t corner_element = blk.size();  // the element over x, y in [0, 1] mm
+  for (std::size_t e = 0; e < blk.size(); ++e) {
+    double cx = 0, cy = 0;
+    for (int k = 0; k < 8; ++k) {
+      cx += m.X[3 * std::size_t(blk.conn[8 * e + k])] / 8;
+      cy += m.X[3 * std::size_t(blk.conn[8 * e + k]) + 1] / 8;
+    }
+    if (cx < 1e-3 && cy < 1e-3) corner_element = e;
+  }
+  ASSERT_LT(corner_element, blk.size());
+  alive[upper_block][corner_element] = 0;
+  tiebreaks.on_erosion(alive, m.X);
+  const auto& pairs = tiebreaks.pairs().at(0);
+  std::size_t released = 0, corner_pair = itf.num_pairs();
+  for (std::size_t p = 0; p < itf.num_pairs(); ++p) {
+    if (pairs.released(p)) ++released;
+    const double* X = &m.X[3 * std::size_t(itf.upper_nodes[p])];
+    if (std::abs(X[0]) < 1e-9 && std::abs(X[1]) < 1e-9) corner_pair = p;
+  }
+  ASSERT_LT(corner_pair, itf.num_pairs());
+  EXPECT_EQ(released, 1u) << "only the corner node's one element of ply 2 eroded";
+  EXPECT_TRUE(pairs.released(corner_pair));
+  EXPECT_EQ(pairs.damage()[corner_pair], 1.0);
+  std::fill(alive[upper_block].begin(), alive[upper_block].end(), 0);
+  tiebreaks.on_erosion(alive, m.X);
+  released = 0;
+  for (std::size_t p = 0; p < itf.num_pairs(); ++p) released += pairs.released(p) ? 1 : 0;
+  EXPECT_EQ(released, itf.num_pairs()) << "ply 2 gone: every pair joins nothing";
 }
 
 TEST(InterfaceScene, MergedIsTheDefaultAndBondsThePairs) {
