@@ -98,10 +98,14 @@ void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
 // its neighbour with its elements intact. Contact between separated plies beyond that is the job of
 // a surface contact (eroding single surface over the plies), which sees the real geometry.
 namespace {
-[[gnu::always_inline]] inline void open_beyond_reach(const PointHistory& h, double area, double release_depth,
+// Returns true when it opened a pressed pair.
+[[gnu::always_inline]] inline bool open_beyond_reach(const PointHistory& h, double area, double release_depth,
                                                      bool released, double u[3]) {
-  if (h.damage >= 1 && (released || u[1] * u[1] + u[2] * u[2] > area || u[0] < -release_depth))
-    u[0] = std::max(u[0], 0.0);
+  if (h.damage >= 1 && u[0] < 0 && (released || u[1] * u[1] + u[2] * u[2] > area || u[0] < -release_depth)) {
+    u[0] = 0;
+    return true;
+  }
+  return false;
 }
 }  // namespace
 
@@ -186,6 +190,7 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
 
   history_.assign(n);
   released_.assign(n, 0);
+  point_elastic_.assign(n, 0.0);
   sums_.assign((n + kChunk - 1) / kChunk);
   set_nodal_mass(nodal_mass);
 }
@@ -217,6 +222,13 @@ void TiebreakPairs::build_face_adjacency(const double* x_ref, bool areas_from_fa
       throw InputError(msg() << "tiebreak pairs: pair " << p << " lies on no interface face (no normal)");
 }
 
+void TiebreakPairs::release_pair(std::size_t pair) {
+  released_[pair] = 1;
+  dissipated_energy_ += pairs_[pair].area * point_elastic_[pair];
+  point_elastic_[pair] = 0;
+  history_.release(pair);
+}
+
 void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, double /*dt*/) {
   const std::size_t n = pairs_.size(), nf = faces_.size() / 4;
   const std::size_t chunks = sums_.size();
@@ -240,9 +252,16 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
         double u[3];
         local_opening(x, p, fr, u);
         PointHistory h = history_.load(p);
-        open_beyond_reach(h, pairs_[p].area, release_depth_, released_[p] != 0, u);
+        // A pair let go by the rules above drops the penalty energy of its compression at once;
+        // like an eroded element's energy it stays in the balance, booked as dissipated (the
+        // stick spring's share the law books itself when the pair opens).
+        const double dropped = open_beyond_reach(h, pairs_[p].area, release_depth_, released_[p] != 0, u)
+                                   ? std::max(0.0, point_elastic_[p] - h.stick_energy)
+                                   : 0.0;
         PointResponse r;
         traction_update(law_, u, h, r);
+        r.dissipated_increment += dropped;
+        point_elastic_[p] = r.elastic_energy;
         history_.store(p, h);
         const auto& c = pairs_[p];
         const double* t = r.traction;
@@ -297,6 +316,7 @@ void TiebreakPairs::visit_state(StateVisitor& visitor) {
   visitor.array("normal", normals_);
   visitor.scalar("passes", passes_);
   visitor.fixed_array("released", released_);
+  visitor.fixed_array("point_elastic", point_elastic_);
 }
 
 }  // namespace plyimpact::cohesive

@@ -84,11 +84,9 @@ class TiebreakPairs {
   void separate_pair(std::size_t pair) { history_.separate(pair); }
   // A pair whose ply is gone on one side (every element around its lower or its upper node eroded)
   // joins nothing: separated for good, no contact, no force from then on (as LS-DYNA drops the
-  // segments of eroded elements from a contact). Its stick spring's energy is let go.
-  void release_pair(std::size_t pair) {
-    released_[pair] = 1;
-    history_.release(pair);
-  }
+  // segments of eroded elements from a contact). The energy it held stays in the balance, booked
+  // as dissipated, as an eroded element's energy stays in the totals.
+  void release_pair(std::size_t pair);
   bool released(std::size_t pair) const { return released_[pair] != 0; }
 
   // Per-pair output for configuration x into out[0 .. size()), in the frames of the last pass.
@@ -125,6 +123,7 @@ class TiebreakPairs {
   int normal_refresh_interval_ = 1;
   double release_depth_;  // m, TiebreakPairsSpec::release_depth
   std::vector<char> released_;             // (num_pairs) 1: released for good (release_pair)
+  std::vector<double> point_elastic_;      // (num_pairs) J/m^2 each pair held after the last apply
   std::uint64_t passes_ = 0;               // apply() calls so far (when the normals are refreshed)
   bool nodes_distinct_ = true;
 

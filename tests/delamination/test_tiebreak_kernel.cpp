@@ -133,7 +133,8 @@ TEST(TiebreakKernel, TwoMassesConserveMomentumAndEnergyThroughSeparationAndFrict
 
 // A separated pair stands for two faces in contact only while its nodes have slid apart by less
 // than its tributary width (|u_t| <= sqrt(A)) and it is not pressed deeper than its release depth. Independent
-// answer: the penalty K_n A |u_n| inside those limits, nothing beyond them (beyond, the "normal
+// answer: the penalty K_n A |u_n| inside those limits, nothing beyond them, and the energy the
+// spring held booked as dissipated when it is let go (beyond, the "normal
 // opening" is a long slide or a separation projected on a turned normal: the default scene's energy
 // jumps came from a pair 29 mm apart reading 29 um of compression, and from one 1.25 mm apart
 // reading 0.43 mm on a normal 58 degrees off).
@@ -157,13 +158,29 @@ TEST(TiebreakKernel, SeparatedPairCarriesContactOnlyWithinReachAndReleaseDepth) 
                        Case{0.0, 2.1e-6, false}}) {
     const double x[6] = {0, 0, 0, c.slide, 0, -c.depth};
     std::fill(f, f + 6, 0.0);
+    const double held = pairs.elastic_energy(), dissipated = pairs.dissipated_energy();
     pairs.apply(x, v, f, 1e-9);
+    // Let go, the penalty energy it held stays in the balance as dissipated (no friction here).
+    if (!c.carries) EXPECT_NEAR(pairs.dissipated_energy() - dissipated, held, 1e-9 * held + 1e-30);
     const double expected = c.carries ? kn * area * c.depth : 0.0;  // N, pushing the upper node up
     EXPECT_NEAR(f[5], expected, 1e-9 * kn * area * c.depth) << "slide " << c.slide << " m, depth " << c.depth << " m";
     EXPECT_NEAR(pairs.elastic_energy(), c.carries ? 0.5 * kn * area * c.depth * c.depth : 0.0,
                 1e-6 * kn * area * c.depth * c.depth)
         << "slide " << c.slide << " m, depth " << c.depth << " m";
   }
+  // Released for good (its ply eroded away): what it held is booked at once, and it carries
+  // nothing from then on, even pressed within reach and depth.
+  const double pressed[6] = {0, 0, 0, 0, 0, -1e-6};
+  pairs.apply(pressed, v, f, 1e-9);
+  const double held = pairs.elastic_energy(), dissipated = pairs.dissipated_energy();
+  ASSERT_GT(held, 0.0);
+  pairs.release_pair(0);
+  EXPECT_NEAR(pairs.dissipated_energy() - dissipated, held, 1e-9 * held);
+  std::fill(f, f + 6, 0.0);
+  pairs.apply(pressed, v, f, 1e-9);
+  EXPECT_EQ(f[5], 0.0);
+  EXPECT_EQ(pairs.elastic_energy(), 0.0);
+  EXPECT_NEAR(pairs.dissipated_energy() - dissipated, held, 1e-9 * held) << "booked once";
   spec.release_depth = 0;
   EXPECT_THROW(TiebreakPairs(p, spec, x0, mass), InputError);
 }
