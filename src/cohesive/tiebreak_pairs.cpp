@@ -272,7 +272,7 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
         }
         elastic += c.area * r.elastic_energy;
         dissipated += c.area * r.dissipated_increment;
-        if (h.damage >= 1) separated += c.area;
+        if (h.damage >= 1 && !released_[p]) separated += c.area;  // a released pair is the hole, not a delamination
       }
       sums_.set(ch, elastic, dissipated, separated);
     }

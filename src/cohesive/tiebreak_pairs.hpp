@@ -64,7 +64,7 @@ class TiebreakPairs {
 
   double elastic_energy() const { return elastic_energy_; }         // J, at the last apply
   double dissipated_energy() const { return dissipated_energy_; }   // J, since the start
-  double separated_area() const { return separated_area_; }         // m^2 of pairs with d = 1
+  double separated_area() const { return separated_area_; }         // m^2 of pairs with d = 1, not released
   double stable_step() const { return stable_step_; }               // s, stiffest pair alone
   Index stable_step_pair() const { return stable_step_pair_; }      // the pair that sets it
 
