@@ -88,6 +88,7 @@ class TiebreakPairs {
   // as dissipated, as an eroded element's energy stays in the totals.
   void release_pair(std::size_t pair);
   bool released(std::size_t pair) const { return released_[pair] != 0; }
+  const std::vector<char>& released_flags() const { return released_; }  // (num_pairs) 1: released
 
   // Per-pair output for configuration x into out[0 .. size()), in the frames of the last pass.
   void sample(const double* x, PairSample* out) const;

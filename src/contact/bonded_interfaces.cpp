@@ -15,6 +15,7 @@ BondedInterfaces::BondedInterfaces(const model::Model& model) {
     ids_.push_back(itf.id);
     first_pair_.push_back(Index(lower_.size()));
     damage_.push_back(nullptr);
+    released_.push_back(nullptr);
     for (std::size_t p = 0; p < itf.num_pairs(); ++p) {
       const Index pair = Index(lower_.size());
       const Index nodes[2] = {itf.lower_nodes[p], itf.upper_nodes[p]};
@@ -32,7 +33,7 @@ BondedInterfaces::BondedInterfaces(const model::Model& model) {
   }
 }
 
-void BondedInterfaces::bind(int interface_id, const std::vector<double>* damage) {
+void BondedInterfaces::bind(int interface_id, const std::vector<double>* damage, const std::vector<char>* released) {
   const auto it = std::find(ids_.begin(), ids_.end(), interface_id);
   if (it == ids_.end()) throw std::logic_error((msg() << "interface " << interface_id << " has no tiebreak pairs").str());
   const std::size_t slot = std::size_t(it - ids_.begin());
@@ -41,7 +42,11 @@ void BondedInterfaces::bind(int interface_id, const std::vector<double>* damage)
   if (damage != nullptr && damage->size() != n)
     throw std::logic_error(
         (msg() << "interface " << interface_id << ": " << damage->size() << " damage values for " << n << " pairs").str());
+  if (released != nullptr && released->size() != n)
+    throw std::logic_error(
+        (msg() << "interface " << interface_id << ": " << released->size() << " release flags for " << n << " pairs").str());
   damage_[slot] = damage;
+  released_[slot] = released;
 }
 
 bool BondedInterfaces::bound(int interface_id) const {

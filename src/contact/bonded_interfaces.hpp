@@ -13,6 +13,8 @@
 // Nodes of no interface, and segments with no corner on I, are never excluded: plies meeting
 // through a hole eroded in the ply between them, and a ply buckling onto itself, make springs.
 // Interfaces without a bound damage state (cohesive elements, or before binding) count as bonded.
+// A pair released for good (its ply eroded away, cohesive::TiebreakPairs::release_pair) acts no
+// more, so it excludes nothing: its nodes meet every face, as nodes of no interface do.
 #pragma once
 
 #include <vector>
@@ -31,13 +33,20 @@ class BondedInterfaces {
   bool empty() const { return lower_.empty(); }
   std::size_t num_pairs() const { return lower_.size(); }
   // Interface number `interface_id` takes its pairs' damage (pair order of model::Interface) from
-  // `damage` (null: bonded all along). The vector must outlive this object.
-  void bind(int interface_id, const std::vector<double>* damage);
+  // `damage` (null: bonded all along) and which are released for good from `released` (null:
+  // none). The vectors must outlive this object.
+  void bind(int interface_id, const std::vector<double>* damage, const std::vector<char>* released = nullptr);
   bool bound(int interface_id) const;
 
   bool bonded(Index pair) const {
     const std::vector<double>* d = damage_[std::size_t(interface_of_[std::size_t(pair)])];
     return d == nullptr || (*d)[std::size_t(pair - first_pair_[std::size_t(interface_of_[std::size_t(pair)])])] < 1.0;
+  }
+
+  bool released(Index pair) const {
+    const int slot = interface_of_[std::size_t(pair)];
+    const std::vector<char>* r = released_[std::size_t(slot)];
+    return r != nullptr && (*r)[std::size_t(pair - first_pair_[std::size_t(slot)])] != 0;
   }
 
   // Whether contact node `node` may not meet the segment with corners q[0..3].
@@ -46,6 +55,7 @@ class BondedInterfaces {
     if (code < 0) return false;
     const Index pair = code >> 1;
     const int side = code & 1;
+    if (released(pair)) return false;
     if (!bonded(pair)) {
       const Index partner = side == 0 ? upper_[std::size_t(pair)] : lower_[std::size_t(pair)];
       return q[0] == partner || q[1] == partner || q[2] == partner || q[3] == partner;
@@ -65,6 +75,7 @@ class BondedInterfaces {
   std::vector<int> ids_;             // (slots) interface number
   std::vector<Index> first_pair_;    // (slots) index of its first pair
   std::vector<const std::vector<double>*> damage_;  // (slots) bound damage, null: bonded
+  std::vector<const std::vector<char>*> released_;  // (slots) bound release flags, null: none
 };
 
 }  // namespace plyimpact::contact

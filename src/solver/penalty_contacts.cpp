@@ -71,7 +71,8 @@ void PenaltyContacts::bind_interfaces() {
   if (!bonded_ || contributors_ == nullptr) return;
   for (const auto& c : *contributors_)
     if (const auto* itf = dynamic_cast<const interface::InterfaceTiebreaks*>(c.get()))
-      for (std::size_t k = 0; k < itf->pairs().size(); ++k) bonded_->bind(itf->interface_ids()[k], &itf->pairs()[k].damage());
+      for (std::size_t k = 0; k < itf->pairs().size(); ++k) bonded_->bind(itf->interface_ids()[k], &itf->pairs()[k].damage(),
+                                                                    &itf->pairs()[k].released_flags());
 }
 
 void PenaltyContacts::apply(const ForceContext& ctx) {
