@@ -12,11 +12,14 @@
 namespace plyimpact::interface {
 
 namespace {
+
 // Below this fraction of the elements' step the interface's bound is worth a warning.
 constexpr double kInterfaceStepWarnRatio = 0.5;
-}  // namespace
 
-namespace {
+// A separated pair pressed deeper than this fraction of the thinnest element on either side of its
+// interface is released (cohesive::TiebreakPairsSpec::release_depth): the fraction LS-DYNA's
+// penalty contacts use by default for solids (PENMAX 0.4 of the element thickness).
+constexpr double kReleaseDepthFraction = 0.4;
 
 // Whether X (x, y) lies in the pre-crack region of `spec` (closed, with a round-off margin).
 bool in_precrack(const config::InterfaceLawSpec& spec, const double* X) {
@@ -99,11 +102,6 @@ cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, co
   }
   return elements;
 }
-
-// A separated pair pressed deeper than this fraction of the thinnest element on either side of its
-// interface is released (cohesive::TiebreakPairsSpec::release_depth): the fraction LS-DYNA's
-// penalty contacts use by default for solids (PENMAX 0.4 of the element thickness).
-static constexpr double kReleaseDepthFraction = 0.4;
 
 // kReleaseDepthFraction times the smallest characteristic length V / A_max (for a ply element, its
 // thickness) of the elements with a node on the interface, at the reference geometry.
