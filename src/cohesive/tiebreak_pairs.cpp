@@ -94,9 +94,11 @@ void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
 // around it, distorted or eroded, may have turned. In the default scene a pair 29 mm apart read
 // 29 um of compression on a tilted normal and its penalty threw 0.27 J into the nodes, and a pair
 // 1.25 mm apart (within reach) read 0.43 mm of compression on a normal 58 degrees off the
-// interface's and held 58 J (energy ratio 0.995 -> 4.1 within four cycles). No ply presses 0.4 of its thickness into
-// its neighbour with its elements intact. Contact between separated plies beyond that is the job of
-// a surface contact (eroding single surface over the plies), which sees the real geometry.
+// interface's and held 58 J (energy ratio 0.995 -> 4.1 within four cycles). No ply presses 0.4 of
+// its thickness into its neighbour with its elements intact. A pair released for good
+// (release_pair) is open whatever its opening. Contact between separated plies beyond these limits
+// is the job of a surface contact (eroding single surface over the plies), which sees the real
+// geometry.
 namespace {
 // Returns true when it opened a pressed pair.
 [[gnu::always_inline]] inline bool open_beyond_reach(const PointHistory& h, double area, double release_depth,

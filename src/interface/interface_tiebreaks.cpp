@@ -116,8 +116,7 @@ static double interface_release_depth(const model::Model& model, const model::In
       const Index* conn = &blk.conn[8 * e];
       if (!std::any_of(conn, conn + 8, [&](Index n) { return on[std::size_t(n)] != 0; })) continue;
       element::NodeVec x;
-      for (int k = 0; k < 8; ++k)
-        for (int i = 0; i < 3; ++i) x[i][k] = model.X[3 * std::size_t(conn[k]) + i];
+      model::gather_reference(model.X, conn, x);
       length = std::min(length, element::hex8_volume(x) / element::hex8_max_face_area(x));
     }
   }
@@ -202,6 +201,7 @@ InterfaceTiebreaks::InterfaceTiebreaks(const model::Model& model, double dt_elem
     } else {
       pairs_.push_back(make_interface_pairs(model, itf));
       ids_.push_back(itf.id);
+      pair_interfaces_.push_back(&itf);
       layouts_.push_back(pair_layout(model, itf));
       columns_.emplace_back(false, pairs_.size() - 1);
       stable_step_ = std::min(stable_step_, pairs_.back().stable_step());
@@ -243,8 +243,7 @@ void InterfaceTiebreaks::on_erosion(const solver::AliveMask& alive, const std::v
         for (int k = 0; k < 8; ++k) held[std::size_t(blk.conn[8 * e + k])] = 1;
   }
   for (std::size_t i = 0; i < pairs_.size(); ++i) {
-    const model::Interface& itf = *std::find_if(model.interfaces.begin(), model.interfaces.end(),
-                                                [&](const model::Interface& f) { return f.id == ids_[i]; });
+    const model::Interface& itf = *pair_interfaces_[i];
     for (std::size_t p = 0; p < itf.num_pairs(); ++p)
       if (!pairs_[i].released(p) && (!held[std::size_t(itf.lower_nodes[p])] || !held[std::size_t(itf.upper_nodes[p])]))
         pairs_[i].release_pair(p);

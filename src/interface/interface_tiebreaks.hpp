@@ -59,7 +59,8 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
  private:
   std::vector<cohesive::TiebreakPairs> pairs_;
   std::vector<int> ids_;
-  const model::Model* model_ = nullptr;  // the element blocks, for on_erosion
+  const model::Model* model_ = nullptr;                   // the element blocks, for on_erosion
+  std::vector<const model::Interface*> pair_interfaces_;  // (pairs_.size()) the model's interface of each
   std::vector<InterfaceLayout> layouts_;  // (columns_.size()) for the outputs, in id order
   std::vector<cohesive::CohesiveElements> cohesive_;
   std::vector<int> cohesive_ids_;

@@ -257,6 +257,13 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh);
 // gravity from the scene; appends the rigid impactor's surface nodes when something uses them.
 void add_rigid_bodies_and_contacts(const config::Scene& scene, Model& model);
 
+// Reference coordinates of the 8 nodes `conn` of one element, component-major (x[i][k]: component i
+// of node k), as the hex8 helpers take them.
+inline void gather_reference(const std::vector<double>& X, const Index* conn, double x[3][8]) {
+  for (int k = 0; k < 8; ++k)
+    for (int i = 0; i < 3; ++i) x[i][k] = X[3 * std::size_t(conn[k]) + i];
+}
+
 // Chunks of at most `chunk_size` elements, greedily coloured so that chunks of one colour share no
 // node. The chunk size is a constant (not the thread count) so results do not depend on threads.
 Schedule make_schedule(const std::vector<ElementBlock>& blocks, std::size_t num_nodes, Index chunk_size = 256);

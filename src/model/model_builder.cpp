@@ -12,11 +12,6 @@ namespace plyimpact::model {
 
 namespace {
 
-void gather_reference(const std::vector<double>& X, const Index* conn, double x[3][8]) {
-  for (int k = 0; k < 8; ++k)
-    for (int i = 0; i < 3; ++i) x[i][k] = X[3 * std::size_t(conn[k]) + i];
-}
-
 std::vector<Index> select_nodes(const config::NodeSetSpec& spec, const Model& model, double tol) {
   std::vector<Index> nodes;
   const std::size_t n = model.num_nodes();

@@ -28,8 +28,7 @@ CycleEstimate estimate_cycles(const model::Model& model) {
     for (std::size_t k = 0; k < b.size(); ++k) {
       const double c = c_step.empty() ? c_material : c_step[k];
       element::NodeVec x;
-      for (int n = 0; n < 8; ++n)
-        for (int d = 0; d < 3; ++d) x[d][n] = model.X[3 * std::size_t(b.conn[8 * k + n]) + d];
+      model::gather_reference(model.X, &b.conn[8 * k], x);
       const double length = element::hex8_volume(x) / element::hex8_max_face_area(x);
       const double dt = model.control.tssfac * length / c * (b.step_scale.empty() ? 1.0 : b.step_scale[k]);
       if (dt < e.dt) {

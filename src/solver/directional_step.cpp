@@ -51,8 +51,7 @@ std::vector<double> step_wave_speeds(const model::Model& model, const model::Ele
   bool any_slower = false;
   for (std::size_t e = 0; e < block.size(); ++e) {
     element::NodeVec x, bg;
-    for (int k = 0; k < 8; ++k)
-      for (int i = 0; i < 3; ++i) x[i][k] = model.X[3 * std::size_t(block.conn[8 * e + k]) + i];
+    model::gather_reference(model.X, &block.conn[8 * e], x);
     const double V = element::hex8_mean_gradient(x, bg);
     const double L = V / element::hex8_max_face_area(x);
     // Gradients in material axes: b_m = Q b with the rows of Q the material axes a, b, c.
