@@ -33,7 +33,7 @@ void PenaltyContact::rebuild(const AliveMask& alive, const std::vector<double>& 
   // Each surviving node keeps its spring history and the force nodes their last forces (the
   // trapezoid of the next pass); the pass after the rebuild looks at any depth (catch_rules).
   const SegmentSetRemap remap = set_.rebuild(alive, x);
-  springs_.remap(remap);
+  eroded_spring_energy_ += springs_.remap(remap);  // energy_ still holds them until the next pass
   std::vector<double> old_forces = std::move(fc_prev_);
   fc_prev_.assign(3 * set_.num_force_nodes(), 0.0);
   for (std::size_t u = 0; u < remap.force_node.size(); ++u)
@@ -270,7 +270,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   book_work(power_old, power_new, dt);
   friction_energy_ += friction_work;
   damping_energy_ += damping_work;
-  energy_ = forces_.potential + friction_energy_ + damping_energy_;
+  energy_ = forces_.potential + friction_energy_ + damping_energy_ + eroded_spring_energy_;
   dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
   springs_.exposed_pass = false;
   fc_prev_.swap(fc_);
@@ -307,6 +307,7 @@ void PenaltyContact::visit_state(StateVisitor& v) {
   v.scalar("energy", energy_);
   v.scalar("friction energy", friction_energy_);
   v.scalar("damping energy", damping_energy_);
+  v.scalar("eroded spring energy", eroded_spring_energy_);
   v.scalar("energy taken from the bodies", taken_);
   v.scalar("power of the last pass", work_power_);
   v.scalar("step of the last pass", work_dt_);

@@ -11,11 +11,12 @@
 //   force     : f_s = (k |g| + viscous) n + f_t on the node, -N_k f_s on the segment nodes, so
 //               linear momentum is conserved to round-off.
 //   energy    : contact energy = potential of the springs active now (sum 0.5 k g^2) + what friction
-//               and damping (VDC) have dissipated; a spring released, switched or created in a step
-//               takes its potential with it, so after separation the contact energy is the
-//               dissipation alone, and energy the discrete contact created or lost (a node caught
-//               deep, a spring dropped while compressed) shows in the energy ratio instead of being
-//               kept in the contact energy. Beside it, the work of the contact forces on the bodies
+//               and damping (VDC) have dissipated + the potential of springs that ended because
+//               their node or segment eroded (kept, as an eroded element's energy is); any other
+//               spring released, switched or created in a step takes its potential with it, so
+//               after separation the contact energy is the dissipation alone, and energy the
+//               discrete contact created or lost (a node caught deep, a node released behind the
+//               face) shows in the energy ratio instead of being kept in the contact energy. Beside it, the work of the contact forces on the bodies
 //               (weighted as the integrator applies them, book_work) gives the energy the contact
 //               took from the bodies; created() = energy() - taken() is the energy the discrete
 //               contact model created (> 0) or destroyed (< 0), for the run checks.
@@ -97,7 +98,10 @@ class PenaltyContact {
   const std::string& name() const { return def_.spec.name; }
   bool eroding() const { return def_.spec.eroding; }
   int soft() const { return def_.spec.SOFT; }
-  double energy() const { return energy_; }  // J, spring potential + friction + damping dissipation
+  double energy() const { return energy_; }  // J, spring potential + friction + damping + eroded springs
+  // J, potential of the springs an eroding rebuild ended (their node or segment eroded), part of
+  // energy(): it stays in the balance as an eroded element's energy does.
+  double eroded_spring_energy() const { return eroded_spring_energy_; }
   double friction_energy() const { return friction_energy_; }  // J, dissipated by friction (part of energy())
   double damping_energy() const { return damping_energy_; }    // J, dissipated by VDC (part of energy())
   double taken() const { return taken_; }  // J, net work the bodies did against the contact forces
@@ -176,7 +180,7 @@ class PenaltyContact {
   std::vector<NodeOutcome> outcomes_;        // (N) slots
   std::vector<std::size_t> outcome_count_;   // (num chunks)
   long exposures_ = 0;
-  double energy_ = 0, friction_energy_ = 0, damping_energy_ = 0;
+  double energy_ = 0, friction_energy_ = 0, damping_energy_ = 0, eroded_spring_energy_ = 0;
   double taken_ = 0;       // J, book_work
   double work_power_ = 0;  // W, f . v of the last pass, and its step: the first half of its work
   double work_dt_ = 0;     // s   is corrected at the next pass (book_work)

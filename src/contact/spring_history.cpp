@@ -19,11 +19,15 @@ void SpringHistory::reset(std::size_t N, std::size_t S) {
   exposed_pass = false;
 }
 
-void SpringHistory::remap(const SegmentSetRemap& r) {
+double SpringHistory::remap(const SegmentSetRemap& r) {
   SpringHistory old = std::move(*this);
   reset(r.new_node.size(), r.new_segment.size());
+  double dropped = 0;
   for (std::size_t i = 0; i < r.node.size(); ++i) {
     const Index j = r.node[i];
+    const bool segment_gone = old.segment[i] >= 0 && r.segment[std::size_t(old.segment[i])] < 0;
+    if (old.engaged[i] && old.segment[i] >= 0 && (j < 0 || segment_gone))
+      dropped += 0.5 * old.k[i] * old.gap[i] * old.gap[i];
     if (j < 0) continue;
     const std::size_t n = std::size_t(j);
     for (int d = 0; d < 3; ++d) {
@@ -45,6 +49,7 @@ void SpringHistory::remap(const SegmentSetRemap& r) {
   new_node = r.new_node;
   new_segment = r.new_segment;
   exposed_pass = true;
+  return dropped;
 }
 
 void SpringHistory::visit_state(StateVisitor& v) {

@@ -32,7 +32,8 @@ struct SpringHistory {
   // Fresh history for a set of N nodes and S segments (nothing engaged, no offsets).
   void reset(std::size_t N, std::size_t S);
   // After a rebuild: each surviving node keeps its history, its segment where that survived.
-  void remap(const SegmentSetRemap& remap);
+  // Returns the potential 0.5 k g^2 of the springs that end with it (their node or segment eroded).
+  double remap(const SegmentSetRemap& remap);
 
   // Gap offset of node i on segment s: the initial-penetration offset plus the exposure offset
   // when s is the segment it was found behind.

@@ -4,6 +4,7 @@
 
 #include "element/hex8.hpp"
 #include "hourglass/element_elasticity.hpp"
+#include "material/composite_damage.hpp"
 
 namespace plyimpact::hourglass {
 
@@ -53,6 +54,26 @@ double inverse_shear(const Compliance& c, const double n[3], const double m[3]) 
   return s;
 }
 
+// The compliance of the degradation table (composite_damage.cpp item 2) for the lost components.
+Compliance without(Compliance c, int lost) {
+  namespace L = material::lost_component;
+  for (int k : {0, 1}) {
+    if (!(lost & (k == 0 ? L::kAa : L::kBb))) continue;
+    for (int j = 0; j < 3; ++j)
+      if (j != k) c.S[k][j] = c.S[j][k] = 0;
+    c.S[k][k] /= kLostComponentResidual;
+  }
+  if (lost & L::kAb) c.invG[0] /= kLostComponentResidual;
+  return c;
+}
+
+void element_moduli(const Compliance& comp, const double (&n)[3][3], double* m) {
+  for (int i = 0; i < 3; ++i) m[i] = 1 / inverse_young(comp, n[i]);
+  m[3] = 1 / inverse_shear(comp, n[0], n[1]);
+  m[4] = 1 / inverse_shear(comp, n[1], n[2]);
+  m[5] = 1 / inverse_shear(comp, n[2], n[0]);
+}
+
 }  // namespace
 
 std::vector<double> assumed_strain_moduli(const model::Model& model, const model::ElementBlock& block) {
@@ -61,13 +82,33 @@ std::vector<double> assumed_strain_moduli(const model::Model& model, const model
   for (std::size_t e = 0; e < block.size(); ++e) {
     double n[3][3];
     element_axes_in_material_axes(model, block, e, n);
-    double* m = &out[6 * e];
-    for (int i = 0; i < 3; ++i) m[i] = 1 / inverse_young(comp, n[i]);
-    m[3] = 1 / inverse_shear(comp, n[0], n[1]);
-    m[4] = 1 / inverse_shear(comp, n[1], n[2]);
-    m[5] = 1 / inverse_shear(comp, n[2], n[0]);
+    element_moduli(comp, n, &out[6 * e]);
   }
   return out;
+}
+
+void assumed_strain_element_moduli(const model::Model& model, const model::ElementBlock& block, std::size_t e,
+                                   int lost, double (&m)[6]) {
+  const Compliance comp = orthotropic_compliance(stiffness_in_material_axes(model.materials[block.material]));
+  double n[3][3];
+  element_axes_in_material_axes(model, block, e, n);
+  element_moduli(without(comp, lost), n, m);
+}
+
+void rescale_assumed_strain_forces(double (&Q)[12], const double (&m_old)[6], const double (&m_new)[6], double a,
+                                   double b, double c) {
+  double r[6];
+  for (int i = 0; i < 6; ++i) r[i] = m_new[i] / m_old[i];
+  constexpr int kNormal[3][3] = {{0, 2, 3}, {4, 5, 7}, {9, 10, 11}};  // Q[4 i + alpha] of axis i's modes
+  for (int i = 0; i < 3; ++i)
+    for (int k : kNormal[i]) Q[k] *= r[i];
+  const double ia = 1 / a, ib = 1 / b, ic = 1 / c;
+  const double sxy = (ia * Q[1] + ib * Q[6] - ic * Q[8]) / (2 * ia * ib);
+  const double syz = (Q[6] - ia * sxy) / ic, szx = (Q[1] - ib * sxy) / ic;
+  const double txy = r[3] * sxy, tyz = r[4] * syz, tzx = r[5] * szx;
+  Q[1] = ib * txy + ic * tzx;
+  Q[6] = ia * txy + ic * tyz;
+  Q[8] = ib * tyz + ia * tzx;
 }
 
 }  // namespace plyimpact::hourglass

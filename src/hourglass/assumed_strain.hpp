@@ -12,7 +12,10 @@
 // so a uniaxial modulus is what makes a rectangular element bend exactly like an Euler-Bernoulli
 // beam of that fibre direction; for an isotropic material E(n) = E and G(n, m) = G. The frame turns
 // with the element and so does a ply's material frame, so the moduli are fixed at t = 0.
-// Undamaged moduli are used for *MAT_054 (as LS-DYNA takes the elastic constants of the card).
+// A *MAT_054 element starts from its undamaged moduli; once its material loses an in-plane
+// component (material::composite_damage_lost_components) the element's moduli are those of the
+// degraded compliance and its stored forces follow (degrade_assumed_strain), so the hourglass modes
+// of a failed element are no stiffer than its constant-strain part.
 #pragma once
 
 #include <cmath>
@@ -50,6 +53,25 @@ PLYIMPACT_LANE_KERNEL void element_frame(const double (&J)[9][N], int l, double 
 // reference geometry. Throws std::logic_error for a material without elastic constants (rigid).
 std::vector<double> assumed_strain_moduli(const model::Model& model, const model::ElementBlock& block);
 
+// The six moduli of element e (as assumed_strain_moduli) when its material has lost the in-plane
+// components `lost` (material::lost_component mask; 0: undamaged). A lost normal component keeps
+// no Poisson coupling and kLostComponentResidual of its compliance's stiffness, a lost ab shear
+// kLostComponentResidual of GAB (the degradation table's E = 0, nu = 0, G = 0, with a floor so that
+// no hourglass mode of a failed element is entirely free).
+inline constexpr double kLostComponentResidual = 1e-3;
+void assumed_strain_element_moduli(const model::Model& model, const model::ElementBlock& block, std::size_t e,
+                                   int lost, double (&m)[6]);
+
+// Rescales the stored forces Q (12, element frame, Q[4 i + alpha] as Qp) of an element whose
+// moduli change from m_old to m_new: every accumulated force is its modulus times an accumulated
+// amplitude, so it follows the modulus (secant, as the material's stress drops with its stiffness).
+// The normal modes take their axis's E ratio. The three shear-coupled forces are
+// Q_x1 = Sxy/b + Szx/c, Q_y2 = Sxy/a + Syz/c, Q_z0 = Syz/b + Szx/a in generalised shear forces S
+// (a map of determinant 2/(abc)); they are split with the current half-lengths a, b, c, scaled with
+// their shear modulus' ratio and recombined.
+void rescale_assumed_strain_forces(double (&Q)[12], const double (&m_old)[6], const double (&m_new)[6], double a,
+                                   double b, double c);
+
 // Forces of the assumed-strain stabilisation for kLanes elements. In the co-rotational element
 // frame x' y' z' (element_frame: orthonormalised centre-Jacobian columns, half-lengths a b c).
 // Hourglass displacement u_i = sum_alpha q_i,alpha h_alpha with h = (xi eta, eta zeta, zeta xi,
@@ -67,11 +89,13 @@ std::vector<double> assumed_strain_moduli(const model::Model& model, const model
 // this gives W = sum QM V/6 [E (q/a)^2 for the linear terms, E/3 (q/a)^2 for xi eta zeta,
 // G (shear)^2], exact pure bending of a rectangular element. (Sources: Belytschko & Bindeman 1993;
 // Belytschko, Liu & Moran, Nonlinear Finite Elements, sec. 8.7; code_aster R3.06.11.)
-// Forces are accumulated in the element frame (Qs in, Qp out, both stored), so a rigid rotation
-// carries them exactly; Qh = E^T Qp are the global forces, dHG their work (trapezoid rule), dHG_old
-// its half with the previous cycle's forces.
+// Forces are accumulated in the element frame (Qa + increment -> Qp, stored), so a rigid rotation
+// carries them exactly; Qs are the forces the nodes received last cycle (Qa = Qs unless the element's
+// moduli just changed: rescale_assumed_strain_forces); Qh = E^T Qp are the global forces, dHG their
+// work (trapezoid rule: Qs and Qp), dHG_old its half with the previous cycle's forces.
 PLYIMPACT_LANE_KERNEL void assumed_strain_forces_lanes(double qm, const LaneVec<6>& Hm, const LaneVec<9>& Jx, const LaneScalar& V,
-                                        const double (&g)[3][4][kLanes], const LaneVec<12>& Qs, double dt,
+                                        const double (&g)[3][4][kLanes], const LaneVec<12>& Qs,
+                                        const LaneVec<12>& Qa, double dt,
                                         double (&Qp)[3][4][kLanes], double (&Qh)[3][4][kLanes], LaneScalar& dHG,
                                         LaneScalar& dHG_old) {
   alignas(64) double Ef[9][kLanes], ha[kLanes], hb[kLanes], hc[kLanes];
@@ -88,18 +112,18 @@ PLYIMPACT_LANE_KERNEL void assumed_strain_forces_lanes(double qm, const LaneVec<
     const double dx1 = gp[0][1][l] * d8, dy2 = gp[1][2][l] * d8, dz0 = gp[2][0][l] * d8;
     const double sxy = dx1 * ib + dy2 * ia, syz = dy2 * ic + dz0 * ib, szx = dz0 * ia + dx1 * ic;
     const double gxy = k * Hm[3][l] * sxy, gyz = k * Hm[4][l] * syz, gzx = k * Hm[5][l] * szx;
-    Qp[0][0][l] = Qs[0][l] + kx * gp[0][0][l] * d8;
-    Qp[0][1][l] = Qs[1][l] + gxy * ib + gzx * ic;
-    Qp[0][2][l] = Qs[2][l] + kx * gp[0][2][l] * d8;
-    Qp[0][3][l] = Qs[3][l] + (1.0 / 3.0) * kx * gp[0][3][l] * d8;
-    Qp[1][0][l] = Qs[4][l] + ky * gp[1][0][l] * d8;
-    Qp[1][1][l] = Qs[5][l] + ky * gp[1][1][l] * d8;
-    Qp[1][2][l] = Qs[6][l] + gxy * ia + gyz * ic;
-    Qp[1][3][l] = Qs[7][l] + (1.0 / 3.0) * ky * gp[1][3][l] * d8;
-    Qp[2][0][l] = Qs[8][l] + gyz * ib + gzx * ia;
-    Qp[2][1][l] = Qs[9][l] + kz * gp[2][1][l] * d8;
-    Qp[2][2][l] = Qs[10][l] + kz * gp[2][2][l] * d8;
-    Qp[2][3][l] = Qs[11][l] + (1.0 / 3.0) * kz * gp[2][3][l] * d8;
+    Qp[0][0][l] = Qa[0][l] + kx * gp[0][0][l] * d8;
+    Qp[0][1][l] = Qa[1][l] + gxy * ib + gzx * ic;
+    Qp[0][2][l] = Qa[2][l] + kx * gp[0][2][l] * d8;
+    Qp[0][3][l] = Qa[3][l] + (1.0 / 3.0) * kx * gp[0][3][l] * d8;
+    Qp[1][0][l] = Qa[4][l] + ky * gp[1][0][l] * d8;
+    Qp[1][1][l] = Qa[5][l] + ky * gp[1][1][l] * d8;
+    Qp[1][2][l] = Qa[6][l] + gxy * ia + gyz * ic;
+    Qp[1][3][l] = Qa[7][l] + (1.0 / 3.0) * ky * gp[1][3][l] * d8;
+    Qp[2][0][l] = Qa[8][l] + gyz * ib + gzx * ia;
+    Qp[2][1][l] = Qa[9][l] + kz * gp[2][1][l] * d8;
+    Qp[2][2][l] = Qa[10][l] + kz * gp[2][2][l] * d8;
+    Qp[2][3][l] = Qa[11][l] + (1.0 / 3.0) * kz * gp[2][3][l] * d8;
     double e_old = 0, e_new = 0;  // trapezoid rule, as IHQ 4/5 (the power Q . g is frame invariant)
     for (int j = 0; j < 3; ++j)
       for (int a = 0; a < 4; ++a) {

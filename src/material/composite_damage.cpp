@@ -205,6 +205,15 @@ const char* composite_damage_cause_name(CompositeDamageCause c) {
   return "unknown";
 }
 
+int composite_damage_lost_components(const double* h) {
+  using namespace lost_component;
+  int lost = 0;
+  if (failed(h, H::kFibreTension)) lost |= kAa | kBb | kAb;
+  if (failed(h, H::kFibreCompression)) lost |= kAa;
+  if (failed(h, H::kMatrixTension) || failed(h, H::kMatrixCompression)) lost |= kBb | kAb;
+  return lost;
+}
+
 void composite_damage_init(const CompositeDamageParams& p, double* h) {
   std::fill(h, h + kCompositeDamageHistory, 0.0);
   h[H::kFibreTension] = h[H::kFibreCompression] = h[H::kMatrixTension] = h[H::kMatrixCompression] = 1.0;

@@ -93,6 +93,16 @@ CompositeDamageResult composite_damage_update(const CompositeDamageParams& p, co
                                               double stress[6], double* history,
                                               const CompositeDamageContext& ctx);
 
+// In-plane components a point has lost to failure, as a bit mask: their tangent is zero from the
+// failure on (removed, or held at the SLIM floor: perfectly plastic). Degradation table of
+// composite_damage.cpp, item 2: fibre tension loses aa, bb and ab; fibre compression aa; matrix
+// tension or compression bb and ab. The assumed-strain hourglass control (IHQ 6) follows it, so an
+// element's hourglass modes are no stiffer than its material.
+namespace lost_component {
+inline constexpr int kAa = 1, kBb = 2, kAb = 4;
+}
+int composite_damage_lost_components(const double* history);
+
 // rho c^2 for the stable time step: undamaged stiffness (damage only lowers it).
 inline double composite_damage_wave_modulus(const CompositeDamageParams& p) { return p.wave_modulus; }
 

@@ -58,6 +58,10 @@ class CompositeDamageLanes {
       if (res.erode) erode[l] = base_ + res.cause;
     }
   }
+  // composite_damage_lost_components of element e's point (ELFORM 1: one point per element).
+  int lost_components(Index e) const {
+    return composite_damage_lost_components(&history_[std::size_t(e) * kCompositeDamageHistory]);
+  }
   // The rotated axes of a surviving lane become the element's.
   void commit(Index e, int l) {
     for (int i = 0; i < 9; ++i) axes_[9 * std::size_t(e) + i] = qnew_[i][l];

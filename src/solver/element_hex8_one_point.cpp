@@ -23,6 +23,24 @@ namespace plyimpact::solver {
 
 namespace {
 
+// An element whose material lost components in this cycle (material/composite_damage.hpp): its IHQ 6
+// moduli become the degraded ones (stored at once: they hold whether or not the element survives the
+// pass) and the forces its new increment accumulates on (Qa, lane l) are rescaled; the work of last
+// cycle's forces is still booked with the forces the nodes received (Qs).
+void follow_lost_components(const model::Model& model, const model::ElementBlock& blk, BlockState& st, Index e,
+                            int lost, const double (&Jx)[9][kLanes], int l, double (&Hm)[6][kLanes],
+                            double (&Qa)[12][kLanes]) {
+  double m_old[6], m_new[6], Q[12];
+  for (int i = 0; i < 6; ++i) m_old[i] = Hm[i][l];
+  hourglass::assumed_strain_element_moduli(model, blk, std::size_t(e), lost, m_new);
+  for (int i = 0; i < 12; ++i) Q[i] = Qa[i][l];
+  alignas(64) double Ef[9][kLanes], a[kLanes], b[kLanes], c[kLanes];
+  hourglass::element_frame(Jx, l, Ef, a, b, c);
+  hourglass::rescale_assumed_strain_forces(Q, m_old, m_new, a[l], b[l], c[l]);
+  for (int i = 0; i < 12; ++i) Qa[i][l] = Q[i];
+  for (int i = 0; i < 6; ++i) Hm[i][l] = m_new[i], st.hourglass_moduli[6 * std::size_t(e) + i] = m_new[i];
+}
+
 template <int IHQ, class Material>
 void one_point(Material& material, const model::Model& model, const model::ElementBlock& blk, BlockState& st,
                Index begin, Index end, const double* __restrict x, const double* __restrict v, double* __restrict f,
@@ -73,7 +91,11 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     if (!blk.step_scale.empty())  // mass scaling (solver/mass_scaling.hpp)
       for (int l = 0; l < kLanes; ++l) dte[l] *= blk.step_scale[elem[l]];
 
-    // Material update.
+    // Material update (IHQ 6 follows the components a failing material loses: lost_before/after).
+    constexpr bool kFollowsLoss = HG::kAssumedStrain && requires(const Material& m) { m.lost_components(Index{}); };
+    [[maybe_unused]] int lost_before[kLanes] = {};
+    if constexpr (kFollowsLoss)
+      for (int l = 0; l < kLanes; ++l) lost_before[l] = material.lost_components(elem[l]);
     alignas(64) double s[6][kLanes], s_old[6][kLanes];
     int erode_cause[kLanes] = {};  // > 0: the material failed (ErosionCause)
     for (int l = 0; l < kLanes; ++l)
@@ -130,10 +152,16 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
       for (int l = 0; l < kLanes; ++l) Mh[l] = st.hourglass_moduli[elem[l]];
       hourglass::stiffness_forces_lanes(qm, Mh, b, V, R, g, Qs, dt, Qh, dHG, dHG_old);
     } else if constexpr (HG::kAssumedStrain) {
-      alignas(64) double Hm[6][kLanes];
+      alignas(64) double Hm[6][kLanes], Qa[12][kLanes];
       for (int l = 0; l < kLanes; ++l)
         for (int i = 0; i < 6; ++i) Hm[i][l] = st.hourglass_moduli[6 * std::size_t(elem[l]) + i];
-      hourglass::assumed_strain_forces_lanes(qm, Hm, Jx, V, g, Qs, dt, Qp, Qh, dHG, dHG_old);
+      std::copy(&Qs[0][0], &Qs[0][0] + 12 * kLanes, &Qa[0][0]);
+      if constexpr (kFollowsLoss)
+        for (int l = 0; l < n; ++l) {
+          const int lost = material.lost_components(elem[l]);
+          if (ok[l] && lost != lost_before[l]) follow_lost_components(model, blk, st, elem[l], lost, Jx, l, Hm, Qa);
+        }
+      hourglass::assumed_strain_forces_lanes(qm, Hm, Jx, V, g, Qs, Qa, dt, Qp, Qh, dHG, dHG_old);
     } else {
       hourglass::viscous_forces_lanes(qm, c, rho, cbrtV, g, Qs, dt, Qh, dHG, dHG_old);
     }

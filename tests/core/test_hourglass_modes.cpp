@@ -13,6 +13,7 @@
 
 #include "element/hex8.hpp"
 #include "hourglass/assumed_strain.hpp"
+#include "material/composite_damage.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -183,6 +184,68 @@ TEST(AssumedStrainModuli, OffAxisPlyMatchesLaminaTransformation) {
     const double expected[6] = {Ex, Ey, E2, Gxy, Gyz, Gzx};
     for (int i = 0; i < 6; ++i) EXPECT_NEAR(m[i], expected[i], 1e-12 * expected[i]) << deg << " deg, modulus " << i;
   }
+}
+
+// A ply whose matrix failed (material::lost_component bb and ab, the degradation table's E_b = 0,
+// nu = 0 on b, G_ab = 0) keeps its fibre: the IHQ 6 moduli are the same lamina transformation with
+// E2 -> r E2, G12 -> r G12 and nu12 -> 0 (r = kLostComponentResidual), the through-thickness
+// modulus E3 unchanged and no coupling to b. Fibre-compression failure (aa lost) leaves the
+// transverse moduli. Tolerance 1e-12 relative, as above.
+TEST(AssumedStrainModuli, LostComponentsLeaveTheDegradedLamina) {
+  namespace L = material::lost_component;
+  const double E1 = 157e9, E2 = 8.5e9, E3 = 8.5e9, G12 = 4.2e9, G23 = 2.2e9, G13 = 4.2e9;
+  const double r = hourglass::kLostComponentResidual;
+  for (const double deg : {0.0, 45.0}) {
+    const double th = deg * M_PI / 180, c = std::cos(th), s = std::sin(th);
+    std::ostringstream y;
+    y << "units: SI\ncontrol: {termination_time: 1}\nmaterials:\n"
+      << "  m: {card: MAT_054, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.019, PRCA: 0.019, PRCB: 0.53,"
+      << " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, XT: 2.2e9, XC: 1.2e9, YT: 45e6, YC: 280e6, SC: 45e6, AOPT: 2, A: ["
+      << c << ", " << s << ", 0], D: [" << -s << ", " << c << ", 0]}\nsections:\n  s: {ELFORM: 1, IHQ: 6, QM: 1}\n"
+      << "parts:\n  p: {material: m, section: s}\n"
+      << "mesh:\n  boxes:\n    - {part: p, size: [0.01, 0.02, 0.005], elements: [1, 1, 1]}\n";
+    const model::Model model = test::model_from_yaml(y.str());
+    double m[6];
+    hourglass::assumed_strain_element_moduli(model, model.blocks[0], 0, L::kBb | L::kAb, m);
+    const double c2 = c * c, s2 = s * s, E2d = r * E2, G12d = r * G12;
+    const double Ex = 1 / (c2 * c2 / E1 + s2 * s2 / E2d + s2 * c2 / G12d);
+    const double Ey = 1 / (s2 * s2 / E1 + c2 * c2 / E2d + s2 * c2 / G12d);
+    const double Gxy = 1 / (2 * (2 / E1 + 2 / E2d - 1 / G12d) * s2 * c2 + (s2 * s2 + c2 * c2) / G12d);
+    const double Gyz = 1 / (c2 / G23 + s2 / G13), Gzx = 1 / (c2 / G13 + s2 / G23);
+    // E_z' = 1/S_cc: the c row keeps only its coupling to a, which a uniaxial c stress does not see.
+    const double expected[6] = {Ex, Ey, E3, Gxy, Gyz, Gzx};
+    for (int i = 0; i < 6; ++i) EXPECT_NEAR(m[i], expected[i], 1e-12 * expected[i]) << deg << " deg, modulus " << i;
+    if (deg == 0) {
+      hourglass::assumed_strain_element_moduli(model, model.blocks[0], 0, L::kAa, m);
+      EXPECT_NEAR(m[0], r * E1, 1e-12 * r * E1);
+      EXPECT_NEAR(m[1], E2, 1e-12 * E2);
+      EXPECT_NEAR(m[3], G12, 1e-12 * G12);
+    }
+  }
+}
+
+// rescale_assumed_strain_forces: the stored forces of an element with half-lengths (a, b, c) built
+// from normal-mode forces N and generalised shear forces S (the kernel's Q_x1 = Sxy/b + Szx/c,
+// Q_y2 = Sxy/a + Syz/c, Q_z0 = Syz/b + Szx/a) become those built from N and S times each modulus'
+// ratio. Tolerance 1e-12 relative (a 3x3 solve).
+TEST(AssumedStrainModuli, RescaledForcesFollowEachModulus) {
+  const double a = 1.25e-3, b = 2.5e-3, c = 0.125e-3;
+  const double m_old[6] = {10, 20, 30, 4, 5, 6}, m_new[6] = {10, 0.02, 15, 0.004, 5, 3};
+  const double sxy = 3.0, syz = -2.0, szx = 0.5;
+  auto build = [&](const double (&ratio)[6], double (&Q)[12]) {
+    for (int i = 0; i < 12; ++i) Q[i] = 0.1 * (i + 1) * ratio[i == 0 || i == 2 || i == 3 ? 0 : i < 8 ? 1 : 2];
+    const double txy = ratio[3] * sxy, tyz = ratio[4] * syz, tzx = ratio[5] * szx;
+    Q[1] = txy / b + tzx / c;
+    Q[6] = txy / a + tyz / c;
+    Q[8] = tyz / b + tzx / a;
+  };
+  const double ones[6] = {1, 1, 1, 1, 1, 1};
+  double ratio[6], Q[12], expected[12];
+  for (int i = 0; i < 6; ++i) ratio[i] = m_new[i] / m_old[i];
+  build(ones, Q);
+  build(ratio, expected);
+  hourglass::rescale_assumed_strain_forces(Q, m_old, m_new, a, b, c);
+  for (int i = 0; i < 12; ++i) EXPECT_NEAR(Q[i], expected[i], 1e-12 * std::abs(expected[i]) + 1e-15) << "force " << i;
 }
 
 }  // namespace
