@@ -65,6 +65,9 @@ class InterfaceSampleSource {
   virtual void sample(std::size_t i, const double* x, cohesive::PairSample* out) const = 0;
   // The stored damage of interface i's points (as of the last force pass), (layout(i).size()).
   virtual const std::vector<double>& damage(std::size_t i) const = 0;
+  // Delaminated area of interface i (m^2) as history.csv's delaminated_area_<i> counts it (pairs
+  // released because their ply eroded away left out; the samples still show them separated).
+  virtual double delaminated_area(std::size_t i) const = 0;
 };
 
 // A model interface whose sample points are its node pairs (quads from its lower segments).

@@ -297,14 +297,18 @@ std::vector<std::string> InterfaceTiebreaks::history_columns() const {
 
 void InterfaceTiebreaks::history_values(std::vector<double>& row) const {
   row.push_back(delaminated_area());
-  for (const auto& [is_cohesive_column, k] : columns_)
-    row.push_back(is_cohesive_column ? cohesive_[k].separated_area() : pairs_[k].separated_area());
+  for (std::size_t i = 0; i < columns_.size(); ++i) row.push_back(delaminated_area(i));
 }
 
 void InterfaceTiebreaks::sample(std::size_t i, const double* x, cohesive::PairSample* out) const {
   const auto& [is_cohesive_column, k] = columns_[i];
   if (is_cohesive_column) cohesive_[k].sample(x, out);
   else pairs_[k].sample(x, out);
+}
+
+double InterfaceTiebreaks::delaminated_area(std::size_t i) const {
+  const auto& [is_cohesive_column, k] = columns_[i];
+  return is_cohesive_column ? cohesive_[k].separated_area() : pairs_[k].separated_area();
 }
 
 const std::vector<double>& InterfaceTiebreaks::damage(std::size_t i) const {

@@ -55,6 +55,7 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
   const InterfaceLayout& layout(std::size_t i) const override { return layouts_[i]; }
   void sample(std::size_t i, const double* x, cohesive::PairSample* out) const override;
   const std::vector<double>& damage(std::size_t i) const override;
+  double delaminated_area(std::size_t i) const override;
 
  private:
   std::vector<cohesive::TiebreakPairs> pairs_;

@@ -53,6 +53,7 @@ class SurfaceTiebreaks : public solver::ForceContributor, public InterfaceSample
   const InterfaceLayout& layout(std::size_t i) const override { return layouts_[i]; }
   void sample(std::size_t i, const double* x, cohesive::PairSample* out) const override { ties_[i].sample(x, out); }
   const std::vector<double>& damage(std::size_t i) const override { return ties_[i].damage(); }
+  double delaminated_area(std::size_t i) const override { return ties_[i].separated_area(); }
 
  private:
   std::vector<std::string> names_;

@@ -145,9 +145,7 @@ void InterfaceFrameWriter::write_cscan(const solver::Solver& solver, RunReport& 
       layer.delaminated[v] = b.samples[std::size_t(l.vertex_point[v])].damage >= 1;
       top = std::max(top, X[2] + l.depth);
     }
-    double area = 0;
-    for (std::size_t p = 0; p < l.size(); ++p)
-      if (b.samples[p].damage >= 1) area += l.area[p];
+    const double area = b.source->delaminated_area(b.index);  // as history.csv: the perforation left out
     deepest = std::max(deepest, l.depth);
     d.interfaces.push_back({l.id, l.label(), l.depth, area});
     d.total_area += area;

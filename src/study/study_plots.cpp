@@ -128,8 +128,12 @@ void plot_case(const fs::path& case_dir, PlotLog& log) {
   output::CsvPlot force;
   force.csv = csv;
   force.x_column = "time";
+  // The contact's resultant on its first surface, component by component (peak_contact_force is its
+  // magnitude), not its `_normal` column: that sums the magnitudes of every spring's normal force,
+  // both ways, which is no force on either body.
   for (const auto& c : columns)
-    if ((c.starts_with("contact_") && c.ends_with("_normal")) || (c.starts_with("wall_") && c.ends_with("_normal")))
+    if ((c.starts_with("contact_") && (c.ends_with("_fx") || c.ends_with("_fy") || c.ends_with("_fz"))) ||
+        (c.starts_with("wall_") && c.ends_with("_normal")))
       force.series.push_back({c, ""});
   if (!force.series.empty()) {
     force.title = case_dir.filename().string() + ": contact force";
