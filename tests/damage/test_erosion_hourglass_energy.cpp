@@ -27,28 +27,12 @@
 #include <iostream>
 #include <string>
 
-#include "../core/support.hpp"
+#include "ply_strip.hpp"
 
 namespace plyimpact {
 namespace {
 
-constexpr double kLength = 0.015, kPly = 0.25e-3;
 constexpr double kDuration = 1e-4;  // s: every erosion of the strip at both steps
-
-std::string strip_scene(int ihq, double qm) {
-  return "units: SI\ncontrol: {termination_time: 1}\nmaterials:\n"
-         "  m: {card: MAT_054, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.01895, PRCA: 0.01895, PRCB: 0.53,"
-         " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0], XT: 2.2e9, XC: 1.2e9, YT: 45e6,"
-         " YC: 280e6, SC: 45e6, SOFT: 1, FBRT: 0, YCFAC: 2, CRIT: 54, BETA: 1, DFAILT: 0.0015, DFAILC: -0.0105,"
-         " DFAILM: 0.0105, DFAILS: 0}\n"
-         "sections:\n  s: {ELFORM: 1, IHQ: " + std::to_string(ihq) + ", QM: " + std::to_string(qm) + "}\n"
-         "parts:\n  p: {material: m, section: s}\n"
-         "mesh:\n  boxes:\n    - {part: p, size: [" + std::to_string(kLength) + ", 2.5e-3, " + std::to_string(2 * kPly) +
-         "], elements: [6, 1, 2]}\n"
-         "node_sets:\n  ends: {box: {min: [-1e-6, -1, -1], max: [1e-6, 1, 1]}}\n"
-         "  ends2: {box: {min: [" + std::to_string(kLength - 1e-6) + ", -1, -1], max: [1, 1, 1]}}\n"
-         "boundary_conditions:\n  - {node_set: ends, fix: [x, z]}\n  - {node_set: ends2, fix: [z]}\n";
-}
 
 struct BalanceRun {
   long eroded = 0;
@@ -57,20 +41,14 @@ struct BalanceRun {
 };
 
 BalanceRun run_strip(int ihq, double qm, double tssfac) {
-  model::Model model = test::model_from_yaml(strip_scene(ihq, qm), "strip.yaml");
-  model.control.tssfac = tssfac;
-  for (std::size_t n = 0; n < model.num_nodes(); ++n)
-    model.v0[3 * n + 2] = -30.0 * std::sin(M_PI * model.X[3 * n] / kLength);  // m/s, first bending mode
-  solver::Solver s(model);
-  const double e0 = s.state().initial_total_energy;
+  const std::string scene = test::ply_strip_scene(
+      "A: [1, 0, 0], D: [0, 1, 0], DFAILT: 0.0015, DFAILC: -0.0105, DFAILM: 0.0105, DFAILS: 0",
+      "{ELFORM: 1, IHQ: " + std::to_string(ihq) + ", QM: " + std::to_string(qm) + "}");
   BalanceRun r;
-  while (s.state().time < kDuration) {
-    s.step();
-    const solver::Energies& e = s.balance();
-    r.worst = std::max(r.worst, std::abs(e.total() - e0 - e.external_work()) / e0);
-    r.hg_max = std::max(r.hg_max, e.hourglass() / e0);
-  }
-  r.eroded = s.state().eroded_elements;
+  const test::StripBalance b = test::run_ply_strip(test::model_from_yaml(scene, "strip.yaml"), 30.0, tssfac, kDuration,
+                                                   [&](const solver::Solver& s) { r.eroded = s.state().eroded_elements; });
+  r.worst = b.worst;
+  r.hg_max = b.hg_max;
   return r;
 }
 
