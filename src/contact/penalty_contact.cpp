@@ -126,11 +126,13 @@ bool PenaltyContact::evaluate_node(std::size_t i, const double* x, const double*
   if (s < 0) {  // released: the spring and its potential end here
     if (entering) return false;  // (a node that was not in contact has all of this at zero already)
     const double depth = release_depth(i, last, x);
+    const double held = 0.5 * h.k[i] * h.gap[i] * h.gap[i];
     h.release(i);
     if (!(depth > 0)) return false;
     out.i = i;
     out.s = -1;
     out.depth = depth;
+    out.potential = held;
     return true;
   }
   out.i = i;
@@ -224,6 +226,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     for (const NodeOutcome* end = o + outcome_count_[std::size_t(c)]; o != end; ++o) {
       if (o->s < 0) {
         Penetrations& p = penetrations_;
+        p.released_potential += o->potential;
         const PenetrationEvent e{set_.node_id(o->i), time, o->depth};
         if (p.count == 0) p.first = e;
         if (e.depth > p.deepest.depth) p.deepest = e;

@@ -63,6 +63,7 @@ struct PenetrationEvent {
 struct Penetrations {
   long count = 0;
   PenetrationEvent first, deepest, last;
+  double released_potential = 0;  // J, what their springs held at the pass before: gone from the balance
 };
 
 // Per-contact output of the last pass.

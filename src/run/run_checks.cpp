@@ -85,7 +85,8 @@ void ContactPenetrationCheck::stop(const solver::Solver* solver, RunReport& repo
     if (p.count == 0) continue;
     report.warnings.push_back("contact '" + c.name() + "': " + std::to_string(p.count) +
                               " penetration(s): nodes passed through the surface and were released (the contact "
-                              "no longer holds them), first " + describe(p.first) + ", deepest " +
+                              "no longer holds them, and the " + std::to_string(p.released_potential) +
+                              " J their springs held left the energy balance), first " + describe(p.first) + ", deepest " +
                               describe(p.deepest) + "; the bodies interpenetrate: raise the penalty (SLSFAC, SOFT 1) "
                               "or refine the contact surfaces");
   }

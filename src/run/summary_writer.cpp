@@ -114,6 +114,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
       if (c.penetrations().count > 0) {
         entry["first"] = event(c.penetrations().first);
         entry["deepest"] = event(c.penetrations().deepest);
+        entry["released_potential"] = c.penetrations().released_potential;  // J
       }
       pen.push_back(entry);
     }
