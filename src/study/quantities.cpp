@@ -245,14 +245,25 @@ Values energy_ratio_deviation(const RunRecord& r) {
   return {{"energy_ratio_deviation", worst}};
 }
 
-// As the run's own warning: hourglass energy over the peak internal energy reached so far.
+// The run's own hourglass check (summary.json hourglass_check.max_ratio: hourglass energy over the
+// internal energy of the same sample, floored at 1 % of the initial energy + external work, so the
+// first contact, when the internal energy is round-off, does not read as a huge ratio). A run
+// without it (its summary lost): the same rule on history.csv, without the floor when the energy
+// columns are missing.
 Values hourglass_ratio(const RunRecord& r) {
+  if (const output::Json* check = r.summary.find("hourglass_check"))
+    if (const output::Json* v = check->find("max_ratio"); v && v->kind() == output::Json::Kind::number)
+      return {{"hourglass_ratio", v->as_number()}};
   require_rows(r);
   const std::size_t h = column(r, "hourglass_energy", "hourglass energy"), e = column(r, "internal_energy", "internal energy");
-  double peak = 0, worst = 0;
+  const int total = r.history.column_index("total_energy"), external = r.history.column_index("external_work");
+  double worst = 0;
   for (std::size_t i = 0; i < rows(r); ++i) {
-    peak = std::max(peak, r.history.at(i, e));
-    if (peak > 0) worst = std::max(worst, r.history.at(i, h) / peak);
+    double floor = 0;
+    if (total >= 0)
+      floor = 0.01 * (r.history.at(0, std::size_t(total)) + (external >= 0 ? r.history.at(i, std::size_t(external)) : 0.0));
+    const double denominator = std::max(r.history.at(i, e), floor);
+    if (denominator > 0) worst = std::max(worst, r.history.at(i, h) / denominator);
   }
   return {{"hourglass_ratio", worst}};
 }
@@ -287,7 +298,7 @@ constexpr QuantityDefinition kQuantities[] = {
      delaminated_area},
     {"first_damage_time", "s", "first sample with an eroded element or a delaminated area", first_damage_time},
     {"energy_ratio_deviation", "1", "largest |energy ratio - 1| over the history", energy_ratio_deviation},
-    {"hourglass_ratio", "1", "largest hourglass energy / peak internal energy so far", hourglass_ratio},
+    {"hourglass_ratio", "1", "the run's hourglass check: largest hourglass / max(internal energy, 1 % of the run's energy)", hourglass_ratio},
     {"wall_time", "s", "wall-clock time of the run (summary.json wall_seconds)", wall_time},
     {"ns_per_element_cycle", "ns", "solver cost per element and cycle", ns_per_element_cycle},
     {"elements", "1", "element count", element_count},

@@ -65,12 +65,22 @@ TEST(Quantities, RigidImpactorClosedForm) {
   EXPECT_DOUBLE_EQ(value(r, "peak_contact_force_time"), 0.04);
   EXPECT_DOUBLE_EQ(value(r, "first_damage_time"), 0.07);
   EXPECT_NEAR(value(r, "energy_ratio_deviation"), 0.010, 1e-15);  // the last sample, 1 - 0.010
-  EXPECT_NEAR(value(r, "hourglass_ratio"), 5.0 / 40.0, 1e-15);  // 0.5 x 10 over the peak internal 40
+  // No summary check and no energy columns: hourglass over the same sample's internal energy, largest
+  // at the last sample (5 over 40; the first samples' 0.5 i / 10 i is 0.05).
+  EXPECT_NEAR(value(r, "hourglass_ratio"), 5.0 / 40.0, 1e-15);
   EXPECT_DOUBLE_EQ(value(r, "wall_time"), 12.5);
   EXPECT_DOUBLE_EQ(value(r, "elements"), 7488);
   EXPECT_DOUBLE_EQ(value(r, "eroded_elements"), 3);
   EXPECT_DOUBLE_EQ(value(r, "eroded_elements", "eroded_elements_fibre_tension"), 2);
   EXPECT_DOUBLE_EQ(value(r, "eroded_elements", "eroded_elements_matrix"), 1);
+}
+
+// A run's summary carries its own hourglass check (the same-sample rule with the 1 % floor at every
+// history sample): the quantity is that verdict, not a recomputation.
+TEST(Quantities, HourglassRatioIsTheRunsOwnCheck) {
+  RunRecord r = tup_record();
+  r.summary["hourglass_check"]["max_ratio"] = 0.3;
+  EXPECT_DOUBLE_EQ(value(r, "hourglass_ratio"), 0.3);
 }
 
 TEST(Quantities, MissingDataSaysWhy) {
