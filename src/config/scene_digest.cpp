@@ -50,6 +50,18 @@ void canonical(const YAML::Node& n, std::string& out) {
 
 }  // namespace
 
+std::string canonical_scene_text(const std::string& yaml_text, const std::string& file_label) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(msg() << detail::location(file_label, e.mark) << ": YAML syntax error: " << e.msg);
+  }
+  std::string text;
+  canonical(root, text);
+  return text;
+}
+
 std::uint64_t scene_digest_from_string(const std::string& yaml_text, const std::string& file_label,
                                        const std::vector<SceneOverride>& overrides) {
   YAML::Node root;

@@ -19,6 +19,12 @@ namespace plyimpact::config {
 /// @throws InputError when the file cannot be read
 std::uint64_t scene_digest(const std::string& path, const std::vector<SceneOverride>& overrides);
 
+/// The scene's values in one canonical line: the same for any comments, layout or flow/block style,
+/// different for any changed key or value (every key kept, unlike the digest). A study case's
+/// identity (study/cases.cpp), so editing a comment does not run finished cases again.
+/// @throws InputError for a YAML syntax error
+std::string canonical_scene_text(const std::string& yaml_text, const std::string& file_label);
+
 /// Same from the scene text.
 std::uint64_t scene_digest_from_string(const std::string& yaml_text, const std::string& file_label,
                                        const std::vector<SceneOverride>& overrides);

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <thread>
 
+#include "config/scene_digest.hpp"
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "core/units.hpp"
@@ -135,7 +136,8 @@ void print_convergence(const ConvergenceReport& rep, std::ostream& out) {
 StudyOutcome run_study(const StudySpec& spec, const StudyOptions& o, std::ostream& out) {
   StudyOutcome res;
   res.dir = o.output_dir.empty() ? spec.output_dir : o.output_dir;
-  const std::string scene_text = slurp(spec.scene);
+  // The scene's values, not its text: a comment or layout edit keeps the finished cases.
+  const std::string scene_text = config::canonical_scene_text(slurp(spec.scene), spec.scene.string());
   std::vector<Case> cases = expand_cases(spec, scene_text);
   res.cases = cases.size();
   // Every case's effective scene must load: refuse the whole study before running anything.

@@ -91,8 +91,14 @@ TEST(StudyRun, TableReuseAndExtension) {
   EXPECT_EQ(r.ran, 1u) << "the interrupted case runs again, the others are reused";
   EXPECT_EQ(r.already_finished, 2u);
 
-  // A changed base scene is a different effective scene: everything runs again.
+  // A comment added to the base scene changes no value: the finished case is reused.
   test::write_file(d.path() / "block.yaml", std::string(kBlock) + "# edited\n");
+  r = run(d, study_text("[0.9]"));
+  EXPECT_EQ(r.ran, 0u) << "a comment is not a different effective scene";
+  // A changed value is: the case runs again.
+  std::string changed = kBlock;
+  changed.replace(changed.find("E: 200e9"), 8, "E: 210e9");
+  test::write_file(d.path() / "block.yaml", changed);
   r = run(d, study_text("[0.9]"));
   EXPECT_EQ(r.ran, 1u);
 }
