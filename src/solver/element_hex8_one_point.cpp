@@ -155,13 +155,16 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
       alignas(64) double Hm[6][kLanes], Qa[12][kLanes];
       for (int l = 0; l < kLanes; ++l)
         for (int i = 0; i < 6; ++i) Hm[i][l] = st.hourglass_moduli[6 * std::size_t(elem[l]) + i];
-      std::copy(&Qs[0][0], &Qs[0][0] + 12 * kLanes, &Qa[0][0]);
+      bool rescaled = false;  // Qa differs from Qs only in a cycle where some lane's material failed
       if constexpr (kFollowsLoss)
         for (int l = 0; l < n; ++l) {
           const int lost = material.lost_components(elem[l]);
-          if (ok[l] && lost != lost_before[l]) follow_lost_components(model, blk, st, elem[l], lost, Jx, l, Hm, Qa);
+          if (!ok[l] || lost == lost_before[l]) continue;
+          if (!rescaled) std::copy(&Qs[0][0], &Qs[0][0] + 12 * kLanes, &Qa[0][0]);
+          rescaled = true;
+          follow_lost_components(model, blk, st, elem[l], lost, Jx, l, Hm, Qa);
         }
-      hourglass::assumed_strain_forces_lanes(qm, Hm, Jx, V, g, Qs, Qa, dt, Qp, Qh, dHG, dHG_old);
+      hourglass::assumed_strain_forces_lanes(qm, Hm, Jx, V, g, Qs, rescaled ? Qa : Qs, dt, Qp, Qh, dHG, dHG_old);
     } else {
       hourglass::viscous_forces_lanes(qm, c, rho, cbrtV, g, Qs, dt, Qh, dHG, dHG_old);
     }
