@@ -48,28 +48,25 @@ void canonical(const YAML::Node& n, std::string& out) {
   }
 }
 
-}  // namespace
-
-std::string canonical_scene_text(const std::string& yaml_text, const std::string& file_label) {
-  YAML::Node root;
+YAML::Node parse(const std::string& yaml_text, const std::string& file_label) {
   try {
-    root = YAML::Load(yaml_text);
+    return YAML::Load(yaml_text);
   } catch (const YAML::Exception& e) {
     throw InputError(msg() << detail::location(file_label, e.mark) << ": YAML syntax error: " << e.msg);
   }
+}
+
+}  // namespace
+
+std::string canonical_scene_text(const std::string& yaml_text, const std::string& file_label) {
   std::string text;
-  canonical(root, text);
+  canonical(parse(yaml_text, file_label), text);
   return text;
 }
 
 std::uint64_t scene_digest_from_string(const std::string& yaml_text, const std::string& file_label,
                                        const std::vector<SceneOverride>& overrides) {
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(msg() << detail::location(file_label, e.mark) << ": YAML syntax error: " << e.msg);
-  }
+  YAML::Node root = parse(yaml_text, file_label);
   detail::Context ctx{file_label, {}};
   detail::apply_overrides(root, overrides, ctx);
   if (root.IsMap()) {

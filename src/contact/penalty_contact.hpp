@@ -16,7 +16,8 @@
 //               spring released, switched or created in a step takes its potential with it, so
 //               after separation the contact energy is the dissipation alone, and energy the
 //               discrete contact created or lost (a node caught deep, a node released behind the
-//               face) shows in the energy ratio instead of being kept in the contact energy. Beside it, the work of the contact forces on the bodies
+//               face) shows in the energy ratio instead of being kept in the contact energy.
+//               Beside it, the work of the contact forces on the bodies
 //               (weighted as the integrator applies them, book_work) gives the energy the contact
 //               took from the bodies; created() = energy() - taken() is the energy the discrete
 //               contact model created (> 0) or destroyed (< 0), for the run checks.
