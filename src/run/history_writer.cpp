@@ -30,6 +30,7 @@ std::vector<std::string> history_columns(const model::Model& model, const solver
   if (can_erode(model)) {
     cols.push_back("eroded_elements");
     cols.push_back("eroded_energy");
+    cols.push_back("eroded_hourglass_energy");
   }
   for (const HistoryColumns* x : extra)
     for (auto& col : x->columns()) cols.push_back(std::move(col));
@@ -63,7 +64,7 @@ void HistoryWriter::add_row(const solver::Solver& solver) {
       if (t.owner == int(c)) row_.push_back(t.value);
     solver.contributors()[c]->history_values(row_);
   }
-  if (can_erode(solver.model())) row_.insert(row_.end(), {double(s.eroded_elements), s.eroded_energy});
+  if (can_erode(solver.model())) row_.insert(row_.end(), {double(s.eroded_elements), s.eroded_energy, s.eroded_hourglass_energy});
   for (const HistoryColumns* x : extra_) x->values(solver, row_);
   table_->add_row(row_);
 }

@@ -21,6 +21,7 @@ namespace plyimpact::run {
 // The check's result for summary.json: the largest share, when, what it was made of, the limit.
 struct HourglassVerdict {
   double max_ratio = 0, time = 0, hourglass = 0, denominator = 0, limit = 0;
+  double eroded_hourglass = 0;  // J, the part of `hourglass` that eroded elements held when deleted
   bool floor_governs = false;  // the denominator at the maximum was the floor, not the internal energy
   bool passed = true;          // max_ratio <= limit
 };
@@ -31,8 +32,9 @@ class HourglassWatch {
 
   explicit HourglassWatch(double warn_ratio) : warn_ratio_(warn_ratio) {}
 
-  // hourglass, internal, reference: J at time t (s).
-  void observe(double t, double hourglass, double internal, double reference);
+  // hourglass, internal, reference: J at time t (s); eroded_hourglass: the part of `hourglass` that
+  // eroded elements held (reported with the maximum: the check counts it, as LS-DYNA's totals do).
+  void observe(double t, double hourglass, double internal, double reference, double eroded_hourglass = 0);
 
   bool exceeded() const { return max_ratio_ > warn_ratio_; }
   double max_ratio() const { return max_ratio_; }
@@ -45,7 +47,7 @@ class HourglassWatch {
  private:
   double warn_ratio_;
   double max_ratio_ = 0;
-  double time_ = 0, hourglass_ = 0, denominator_ = 0;  // at the largest ratio
+  double time_ = 0, hourglass_ = 0, denominator_ = 0, eroded_hourglass_ = 0;  // at the largest ratio
   bool floor_governs_ = false;
 };
 

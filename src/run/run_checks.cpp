@@ -34,7 +34,7 @@ void HourglassCheck::after_cycle(const solver::Solver& solver) {
   if (!samples_.due(t) || !(solver.balance().time > 0)) return;
   samples_.advance(t);
   const solver::Energies& e = solver.balance();
-  watch_.observe(e.time, e.hourglass(), e.internal(), reference_energy(solver));
+  watch_.observe(e.time, e.hourglass(), e.internal(), reference_energy(solver), solver.state().eroded_hourglass_energy);
 }
 
 void HourglassCheck::stop(const solver::Solver* solver, RunReport& report) {

@@ -127,6 +127,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     output::Json erosion = output::Json::object();
     erosion["eroded_elements"] = solver->state().eroded_elements;
     erosion["eroded_energy"] = solver->state().eroded_energy;
+    erosion["eroded_hourglass_energy"] = solver->state().eroded_hourglass_energy;
     output::Json by_part = output::Json::array();
     for (const auto& c : solver->state().erosion) {
       output::Json entry = output::Json::object();
@@ -146,6 +147,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     hg["max_ratio"] = h.max_ratio;  // hourglass / max(internal, 1 % of the reference), over the run
     hg["time_of_max"] = h.time;
     hg["hourglass_energy_at_max"] = h.hourglass;
+    hg["eroded_hourglass_energy_at_max"] = h.eroded_hourglass;  // part held by eroded elements
     hg["denominator_at_max"] = h.denominator;
     hg["floor_governs"] = h.floor_governs;
     hg["limit"] = h.limit;

@@ -190,7 +190,7 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
         r.internal_energy += dIE_old[l];
         r.hourglass_energy += dHG_old[l];
         r.bulk_viscous_energy += dQ_old[l];
-        erode_element(st, e, blk.element_id[e], cause, 1, r.eroded, r.eroded_energy);
+        erode_element(st, e, blk.element_id[e], cause, 1, r.eroded, r.eroded_energy, r.eroded_hourglass_energy);
         continue;
       }
       st.internal_energy[e] += dIE[l];

@@ -159,7 +159,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
       st.internal_energy[e] += dIE_old;
       r.internal_energy += dIE_old;
       r.bulk_viscous_energy += -0.5 * st.bulk_q[e] * trDbar * V * dt;
-      erode_element(st, e, blk.element_id[e], erode_cause, 8, r.eroded, r.eroded_energy);
+      erode_element(st, e, blk.element_id[e], erode_cause, 8, r.eroded, r.eroded_energy, r.eroded_hourglass_energy);
       continue;
     }
     st.internal_energy[e] += dIE;

@@ -28,6 +28,7 @@ struct ChunkResult {
   // with their erosion cause (ErosionCause), and the internal + hourglass energy they held.
   std::vector<std::pair<Index, int>> eroded;
   double eroded_energy = 0;
+  double eroded_hourglass_energy = 0;  // J, the hourglass part of eroded_energy
 };
 
 

@@ -31,7 +31,8 @@ inline int time_step_erosion(int cause, double erode_tsmin, double dt, double el
 
 // Deletes element e (block index; id: its element id) with `points` integration points: zero
 // stress; appended to `eroded` with its cause, and the internal + hourglass energy it holds
-// (already including this cycle's) added to `eroded_energy`.
+// (already including this cycle's) added to `eroded_energy`, its hourglass part also to
+// `eroded_hourglass` (LS-DYNA's GLSTAT lists the eroded hourglass energy on a line of its own).
 //
 // What "this cycle's" energy is: only the work of the previous cycle's stress (and hourglass and
 // bulk-viscous forces) over this step, half of the trapezoid rule. Central differences pair the
@@ -42,10 +43,12 @@ inline int time_step_erosion(int cause, double erode_tsmin, double dt, double el
 // measures it).
 
 inline void erode_element(BlockState& st, Index e, Index id, int cause, int points,
-                          std::vector<std::pair<Index, int>>& eroded, double& eroded_energy) {
+                          std::vector<std::pair<Index, int>>& eroded, double& eroded_energy,
+                          double& eroded_hourglass) {
   std::fill_n(&st.stress[6 * std::size_t(points) * std::size_t(e)], 6 * points, 0.0);
   eroded.emplace_back(id, cause);
   eroded_energy += st.internal_energy[e] + st.hourglass_energy[e];
+  eroded_hourglass += st.hourglass_energy[e];
 }
 
 }  // namespace plyimpact::solver

@@ -57,6 +57,7 @@ void merge(ChunkResult& total, const ChunkResult& r) {
   }
   total.eroded.insert(total.eroded.end(), r.eroded.begin(), r.eroded.end());
   total.eroded_energy += r.eroded_energy;
+  total.eroded_hourglass_energy += r.eroded_hourglass_energy;
 }
 }
 
@@ -491,6 +492,7 @@ void Solver::check_after_pass(double dt_used) {
       count_erosion(id, cause);
     }
     s.eroded_energy += r.eroded_energy;
+    s.eroded_hourglass_energy += r.eroded_hourglass_energy;
   }
   s.internal_energy += total.internal_energy;
   s.hourglass_energy += total.hourglass_energy;

@@ -49,6 +49,7 @@ void State::visit_state(StateVisitor& sv) {
   sv.fixed_array("reaction", reaction);
   sv.scalar("eroded_elements", eroded_elements);
   sv.scalar("eroded_energy", eroded_energy);
+  sv.scalar("eroded_hourglass_energy", eroded_hourglass_energy);
   sv.array("erosion", erosion);
 }
 

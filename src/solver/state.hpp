@@ -65,6 +65,7 @@ struct State {
   // plus hourglass energy they held (it stays in the totals; reported as eroded).
   long eroded_elements = 0;
   double eroded_energy = 0;
+  double eroded_hourglass_energy = 0;  // J, the hourglass part of eroded_energy
   std::vector<ErosionCount> erosion;
 
   // Every member above (the balance by its values: its terms are fixed by the model).

@@ -36,6 +36,8 @@ constexpr double kDuration = 1e-4;  // s: every erosion of the strip at both ste
 
 struct BalanceRun {
   long eroded = 0;
+  double eroded_hourglass = 0;       // J, as the run reports it (history.csv, summary.json)
+  double deleted_hourglass_sum = 0;  // J, the hourglass energy the deleted elements hold, summed
   test::StripBalance balance;
 };
 
@@ -45,7 +47,15 @@ BalanceRun run_strip(int ihq, double qm, double tssfac) {
       "{ELFORM: 1, IHQ: " + std::to_string(ihq) + ", QM: " + std::to_string(qm) + "}");
   BalanceRun r;
   r.balance = test::run_ply_strip(test::model_from_yaml(scene, "strip.yaml"), 30.0, tssfac, kDuration,
-                                  [&](const solver::Solver& s) { r.eroded = s.state().eroded_elements; });
+                                  [&](const solver::Solver& s) {
+                                    r.eroded = s.state().eroded_elements;
+                                    r.eroded_hourglass = s.state().eroded_hourglass_energy;
+                                    const auto& blocks = s.state().blocks;
+                                    for (std::size_t b = 0; b < blocks.size(); ++b)
+                                      for (std::size_t e = 0; e < blocks[b].hourglass_energy.size(); ++e)
+                                        if (!s.element_alive(int(b), Index(e)))
+                                          r.deleted_hourglass_sum += blocks[b].hourglass_energy[e];
+                                  });
   return r;
 }
 
@@ -61,6 +71,12 @@ TEST_P(ErosionHourglassEnergy, BalanceHoldsThroughEveryErosion) {
             << " of it\n";
   ASSERT_GT(fine.eroded, 0) << "the strip should have failed in fibre tension";
   test::expect_second_order_balance(coarse.balance, fine.balance);
+  // The reported eroded hourglass energy is what the deleted elements hold, as GLSTAT's line of it:
+  // the same numbers summed in another order (chunks against element order), so to round-off.
+  for (const BalanceRun* r : {&coarse, &fine}) {
+    EXPECT_GT(r->deleted_hourglass_sum, 0);
+    EXPECT_NEAR(r->eroded_hourglass, r->deleted_hourglass_sum, 1e-12 * r->deleted_hourglass_sum);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(IHQ, ErosionHourglassEnergy,

@@ -61,6 +61,22 @@ TEST(HourglassWatch, TinyInternalEnergyIsJudgedAgainstTheFloor) {
   EXPECT_NE(w.warning().find("floor of 1% of the run's energy"), std::string::npos) << w.warning();
 }
 
+// What eroded elements held is reported with the maximum, and the advice follows where it is.
+TEST(HourglassWatch, ErodedShareIsReportedWithTheMaximum) {
+  run::HourglassWatch w(0.1);
+  w.observe(1e-5, 0.05, 1.0, 10.0, 0.0);
+  w.observe(2e-5, 0.4, 1.0, 10.0, 0.3);
+  w.observe(3e-5, 0.3, 1.0, 10.0, 0.3);  // smaller share: not the maximum
+  EXPECT_DOUBLE_EQ(w.verdict().eroded_hourglass, 0.3);
+  const std::string s = w.warning();
+  EXPECT_NE(s.find("0.3 J of it held by eroded elements"), std::string::npos) << s;
+  EXPECT_NE(s.find("before they eroded"), std::string::npos) << s;
+
+  run::HourglassWatch live(0.1);
+  live.observe(1e-5, 0.4, 1.0, 10.0, 0.1);
+  EXPECT_NE(live.warning().find("use IHQ 6"), std::string::npos) << live.warning();
+}
+
 TEST(HourglassWatch, RunBelowTheLimitPasses) {
   run::HourglassWatch w(0.1);
   w.observe(1e-5, 0.05, 1.0, 10.0);  // 5 %
