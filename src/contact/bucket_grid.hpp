@@ -37,7 +37,9 @@ class BucketGrid {
   long dims_[3] = {0, 0, 0};
   std::vector<Index> offsets_;  // (num_buckets + 1)
   std::vector<Index> items_;
-  std::vector<Index> fill_;     // scratch
+  std::vector<Index> fill_;     // scratch: per thread and bucket, counts then positions
+  // Below this many items the grid is built on one thread (a parallel region costs a few us).
+  static constexpr std::size_t kParallelMinItems = 2048;
 };
 
 }  // namespace plyimpact::contact

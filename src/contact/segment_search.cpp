@@ -78,8 +78,10 @@ void SegmentSearch::sort(const SegmentSet& set, const double* x, double step_dep
     const auto& ids = side_segs_[side];
     auto& boxes = boxes_[side];
     boxes.resize(6 * ids.size());
-    for (std::size_t j = 0; j < ids.size(); ++j) {
-      const std::size_t s = std::size_t(ids[j]);
+    const long J = long(ids.size());
+#pragma omp parallel for schedule(static) if (parallel_for(ids.size()))
+    for (long jl = 0; jl < J; ++jl) {
+      const std::size_t j = std::size_t(jl), s = std::size_t(ids[j]);
       const Index* q = set.segment_nodes(s);
       double* b = &boxes[6 * j];
       for (int d = 0; d < 3; ++d) {
@@ -96,8 +98,10 @@ void SegmentSearch::sort(const SegmentSet& set, const double* x, double step_dep
     grid_[side].build(boxes, cell_);
   }
   const std::vector<Index>& nodes = set.force_nodes();
-  for (std::size_t u = 0; u < nodes.size(); ++u)
-    for (int d = 0; d < 3; ++d) x_sort_[3 * u + d] = x[3 * std::size_t(nodes[u]) + d];
+  const long U = long(nodes.size());
+#pragma omp parallel for schedule(static) if (parallel_for(nodes.size()))
+  for (long u = 0; u < U; ++u)
+    for (int d = 0; d < 3; ++d) x_sort_[3 * std::size_t(u) + d] = x[3 * std::size_t(nodes[std::size_t(u)]) + d];
   cycles_since_sort_ = 0;
   ++sorts_;
   // The lists are built for the motion expected before the next sort, not for the whole bucket
