@@ -13,23 +13,28 @@ long BucketGrid::bucket_of(double x, int d) const {
 
 void BucketGrid::build(std::span<const double> boxes, double cell_hint) {
   const std::size_t n = boxes.size() / 6;
-  // Threads take fixed contiguous ranges of items; each bucket lists its items range by range, so
-  // in item order, the same grid for any thread count.
-  const int T = n >= kParallelMinItems ? omp_get_max_threads() : 1;
-  double lo0 = 1e300, lo1 = 1e300, lo2 = 1e300, hi0 = -1e300, hi1 = -1e300, hi2 = -1e300;  // exact in any order
-#pragma omp parallel for schedule(static) num_threads(T) if (T > 1) reduction(min : lo0, lo1, lo2) reduction(max : hi0, hi1, hi2)
-  for (long il = 0; il < long(n); ++il) {
-    const double* b = &boxes[6 * std::size_t(il)];
-    lo0 = std::min(lo0, b[0]), lo1 = std::min(lo1, b[1]), lo2 = std::min(lo2, b[2]);
-    hi0 = std::max(hi0, b[3]), hi1 = std::max(hi1, b[4]), hi2 = std::max(hi2, b[5]);
-  }
-  lo_[0] = lo0, lo_[1] = lo1, lo_[2] = lo2;
-  const double hi[3] = {hi0, hi1, hi2};
   if (n == 0) {
     offsets_.assign(1, 0);
     dims_[0] = dims_[1] = dims_[2] = 0;
     return;
   }
+  const int threads = n >= kParallelMinItems ? omp_get_max_threads() : 1;
+  size_grid(boxes, cell_hint, threads);
+  list_items(boxes, threads);
+}
+
+void BucketGrid::size_grid(std::span<const double> boxes, double cell_hint, int threads) {
+  const long n = long(boxes.size() / 6);
+  double lo0 = 1e300, lo1 = 1e300, lo2 = 1e300, hi0 = -1e300, hi1 = -1e300, hi2 = -1e300;  // exact in any order
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1) \
+    reduction(min : lo0, lo1, lo2) reduction(max : hi0, hi1, hi2)
+  for (long i = 0; i < n; ++i) {
+    const double* b = &boxes[6 * std::size_t(i)];
+    lo0 = std::min(lo0, b[0]), lo1 = std::min(lo1, b[1]), lo2 = std::min(lo2, b[2]);
+    hi0 = std::max(hi0, b[3]), hi1 = std::max(hi1, b[4]), hi2 = std::max(hi2, b[5]);
+  }
+  lo_[0] = lo0, lo_[1] = lo1, lo_[2] = lo2;
+  const double hi[3] = {hi0, hi1, hi2};
   cell_ = cell_hint > 0 ? cell_hint : 1.0;
   const double max_buckets = 2.0 * double(n) + 64.0;
   for (;;) {
@@ -39,7 +44,10 @@ void BucketGrid::build(std::span<const double> boxes, double cell_hint) {
     cell_ *= std::cbrt(count / max_buckets) * 1.01;
   }
   for (int d = 0; d < 3; ++d) dims_[d] = std::max(1L, long(std::ceil((hi[d] - lo_[d]) / cell_)));
-  const std::size_t nb = std::size_t(dims_[0] * dims_[1] * dims_[2]);
+}
+
+void BucketGrid::list_items(std::span<const double> boxes, int threads) {
+  const std::size_t n = boxes.size() / 6, nb = std::size_t(dims_[0] * dims_[1] * dims_[2]);
   auto for_buckets = [&](std::size_t i, auto&& fn) {
     long b0[3], b1[3];
     for (int d = 0; d < 3; ++d) {
@@ -50,15 +58,18 @@ void BucketGrid::build(std::span<const double> boxes, double cell_hint) {
       for (long j = b0[1]; j <= b1[1]; ++j)
         for (long l = b0[0]; l <= b1[0]; ++l) fn(std::size_t((k * dims_[1] + j) * dims_[0] + l));
   };
-  // fill_[t * nb + b]: how many of thread t's items bucket b lists, then where they go.
-  fill_.assign(std::size_t(T) * nb, 0);
+  // Items split into `threads` fixed contiguous ranges; fill_[r * nb + b] counts range r's items in
+  // bucket b, then is where the next of them goes. Buckets list range by range, i.e. in item order.
+  fill_.assign(std::size_t(threads) * nb, 0);
   offsets_.resize(nb + 1);
-  auto range = [&](int t) { return std::pair{n * std::size_t(t) / std::size_t(T), n * std::size_t(t + 1) / std::size_t(T)}; };
-#pragma omp parallel num_threads(T) if (T > 1)
+  auto range = [&](int r) {
+    return std::pair{n * std::size_t(r) / std::size_t(threads), n * std::size_t(r + 1) / std::size_t(threads)};
+  };
+#pragma omp parallel num_threads(threads) if (threads > 1)
   {
     // Range r is counted and filled by the same thread (a team smaller than asked takes several).
     const int t = omp_get_thread_num(), team = omp_get_num_threads();
-    for (int r = t; r < T; r += team) {
+    for (int r = t; r < threads; r += team) {
       const auto [i0, i1] = range(r);
       Index* count = &fill_[std::size_t(r) * nb];
       for (std::size_t i = i0; i < i1; ++i) for_buckets(i, [&](std::size_t b) { ++count[b]; });
@@ -69,8 +80,8 @@ void BucketGrid::build(std::span<const double> boxes, double cell_hint) {
       Index at = 0;
       for (std::size_t b = 0; b < nb; ++b) {
         offsets_[b] = at;
-        for (int u = 0; u < T; ++u) {
-          Index& c = fill_[std::size_t(u) * nb + b];
+        for (int r = 0; r < threads; ++r) {
+          Index& c = fill_[std::size_t(r) * nb + b];
           const Index k = c;
           c = at;
           at += k;
@@ -79,7 +90,7 @@ void BucketGrid::build(std::span<const double> boxes, double cell_hint) {
       offsets_[nb] = at;
       items_.resize(std::size_t(at));
     }
-    for (int r = t; r < T; r += team) {
+    for (int r = t; r < threads; r += team) {
       const auto [i0, i1] = range(r);
       Index* next = &fill_[std::size_t(r) * nb];
       for (std::size_t i = i0; i < i1; ++i) for_buckets(i, [&](std::size_t b) { items_[std::size_t(next[b]++)] = Index(i); });

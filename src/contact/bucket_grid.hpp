@@ -32,6 +32,10 @@ class BucketGrid {
 
  private:
   long bucket_of(double x, int d) const;
+  // The grid's origin, bucket edge and dimensions from the boxes' extent and the requested edge.
+  void size_grid(std::span<const double> boxes, double cell_hint, int threads);
+  // offsets_ and items_: every item in each bucket its box overlaps, in item order.
+  void list_items(std::span<const double> boxes, int threads);
   double lo_[3] = {0, 0, 0};
   double cell_ = 1;
   long dims_[3] = {0, 0, 0};
