@@ -40,12 +40,23 @@ void PenaltyContact::rebuild(const AliveMask& alive, const std::vector<double>& 
     if (const Index w = remap.force_node[u]; w >= 0)
       for (int d = 0; d < 3; ++d) fc_prev_[3 * std::size_t(w) + d] = old_forces[3 * u + d];
   start(x);
+  list_previous_forces();
+}
+
+void PenaltyContact::list_previous_forces() {
+  touched_prev_.clear();
+  for (std::size_t u = 0; u < set_.num_force_nodes(); ++u)
+    if (fc_prev_[3 * u] != 0 || fc_prev_[3 * u + 1] != 0 || fc_prev_[3 * u + 2] != 0) touched_prev_.push_back(Index(u));
 }
 
 void PenaltyContact::start(const std::vector<double>& x) {
   const std::size_t U = set_.num_force_nodes();
   fc_.assign(3 * U, 0.0);
   rows_.assign(U, 0.0);
+  marked_.assign(U, 0);
+  touched_.clear();
+  touched_.reserve(U);  // no allocation in the passes
+  touched_prev_.reserve(U);
   outcomes_.resize(set_.num_nodes());
   outcome_count_.assign((set_.num_nodes() + kNodeChunk - 1) / kNodeChunk, 0);
   search_.reset(set_, x.data());
@@ -204,7 +215,10 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   // Largest new-contact depth of this pass (catch_segment's new_contact_depth below).
   const double step_depth = 4 * dt * std::sqrt(v_max2);
   if (search_.sort_due(motion, step_depth)) search_.sort(set_, x, step_depth, springs_.exposed_pass);
-  std::fill(fc_.begin(), fc_.end(), 0.0);
+  for (const Index u : touched_)
+    for (int d = 0; d < 3; ++d) fc_[3 * std::size_t(u) + d] = 0;
+  touched_.clear();
+  if (marked_.size() != U) marked_.assign(U, 0);  // a restart read a rebuilt surface
   forces_ = ContactForces{};
   const bool friction = law_.friction();
   const double v_max = std::sqrt(v_max2);
@@ -244,10 +258,12 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       forces_.potential += o->potential;
       ++forces_.active;
       const Index ui = set_.force_node_of_node(o->i);
+      touch(ui);
       double* fs = &fc_[3 * std::size_t(ui)];
       for (int d = 0; d < 3; ++d) fs[d] += o->F[d];
       const Index* ql = set_.force_nodes_of_segment(std::size_t(o->s));
       for (int a = 0; a < 4; ++a) {
+        touch(ql[a]);
         double* fm = &fc_[3 * std::size_t(ql[a])];
         for (int d = 0; d < 3; ++d) fm[d] -= o->N[a] * o->F[d];
       }
@@ -256,19 +272,25 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
     }
   }
   // Scatter, side-A resultant and the work of the contact forces on the bodies (book_work).
+  // Over the touched force nodes in ascending order: the sums of a loop over all of them.
   const std::vector<Index>& nodes = set_.force_nodes();
+  std::sort(touched_.begin(), touched_.end());
   double power_old = 0, power_new = 0, omega2 = 0;
-  for (std::size_t u = 0; u < U; ++u) {
+  for (const Index ui : touched_) {
+    const std::size_t u = std::size_t(ui), node = std::size_t(nodes[u]);
+    marked_[u] = 0;
     omega2 = std::max(omega2, rows_[u] * set_.force_node_inv_mass(u));
     rows_[u] = 0;
-    const std::size_t node = std::size_t(nodes[u]);
     for (int d = 0; d < 3; ++d) {
       const double fu = fc_[3 * u + d];
       f[3 * node + d] += fu;
-      power_old += fc_prev_[3 * u + d] * v[3 * node + d];
       power_new += fu * v[3 * node + d];
       if (set_.force_node_side_a(u)) forces_.resultant[d] += fu;
     }
+  }
+  for (const Index ui : touched_prev_) {
+    const std::size_t u = std::size_t(ui), node = std::size_t(nodes[u]);
+    for (int d = 0; d < 3; ++d) power_old += fc_prev_[3 * u + d] * v[3 * node + d];
   }
   book_work(power_old, power_new, dt);
   friction_energy_ += friction_work;
@@ -276,8 +298,12 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   energy_ = forces_.potential + friction_energy_ + damping_energy_ + eroded_spring_energy_;
   dt_springs_ = omega2 > 0 ? 2 / std::sqrt(omega2) : kInf;
   springs_.exposed_pass = false;
-  fc_prev_.swap(fc_);
-  std::copy(fc_prev_.begin(), fc_prev_.end(), fc_.begin());  // fc_ keeps the last forces for output
+  // fc_prev_ becomes this pass's forces; fc_ keeps them for output until the next pass.
+  for (const Index u : touched_prev_)
+    for (int d = 0; d < 3; ++d) fc_prev_[3 * std::size_t(u) + d] = 0;
+  for (const Index u : touched_)
+    for (int d = 0; d < 3; ++d) fc_prev_[3 * std::size_t(u) + d] = fc_[3 * std::size_t(u) + d];
+  touched_prev_ = touched_;
 }
 
 void PenaltyContact::book_work(double power_old, double power_new, double dt) {
@@ -305,6 +331,8 @@ void PenaltyContact::visit_state(StateVisitor& v) {
   springs_.visit_state(v);
   v.array("forces", fc_);
   v.array("forces of the last pass", fc_prev_);
+  v.array("force nodes of this pass", touched_);
+  v.array("force nodes of the last pass", touched_prev_);
   v.array("stability rows", rows_);  // zero between passes; visited for its size
   v.scalar("exposures", exposures_);
   v.scalar("energy", energy_);

@@ -177,6 +177,15 @@ class PenaltyContact {
   // trapezoid of the contact work).
   std::vector<double> fc_, fc_prev_;
   std::vector<double> rows_;  // (U) Gershgorin row sums of the pass's springs, zeroed after use
+  // The force nodes that can have a non-zero entry in fc_ / fc_prev_, ascending: the sums over them
+  // are those over every force node (the others add zeros), without walking all of them each pass.
+  std::vector<Index> touched_, touched_prev_;
+  std::vector<char> marked_;  // (U) scratch: in touched_ during the outcome loop
+  void touch(Index u) {
+    if (!marked_[std::size_t(u)]) marked_[std::size_t(u)] = 1, touched_.push_back(u);
+  }
+  // touched_prev_ from fc_prev_ (after a rebuild renumbered the force nodes).
+  void list_previous_forces();
   // Outcomes of the parallel node loop: chunk c of kNodeChunk nodes writes from c kNodeChunk on.
   static constexpr std::size_t kNodeChunk = 256;
   std::vector<NodeOutcome> outcomes_;        // (N) slots
