@@ -103,6 +103,13 @@ inline constexpr int kAa = 1, kBb = 2, kAb = 4;
 }
 int composite_damage_lost_components(const double* history);
 
+// A point that has failed in no mode and is not eroded (its degradation box is unbounded).
+inline bool composite_damage_intact(const double* h) {
+  namespace H = composite_history;
+  return h[H::kCause] == 0 && h[H::kFibreTension] == 1 && h[H::kFibreCompression] == 1 &&
+         h[H::kMatrixTension] == 1 && h[H::kMatrixCompression] == 1;
+}
+
 // rho c^2 for the stable time step: undamaged stiffness (damage only lowers it).
 inline double composite_damage_wave_modulus(const CompositeDamageParams& p) { return p.wave_modulus; }
 

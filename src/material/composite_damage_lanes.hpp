@@ -10,6 +10,7 @@
 #include <cstddef>
 
 #include "material/composite_damage.hpp"
+#include "material/composite_damage_intact_lanes.hpp"
 #include "material/lane_point.hpp"
 
 namespace plyimpact::material {
@@ -35,27 +36,42 @@ class CompositeDamageLanes {
   // initial_dt: (elements) element step at t = 0 (TFAIL ratio); erosion_base + cause is reported.
   CompositeDamageLanes(const CompositeDamageParams& p, double* history, double* axes, const double* initial_dt,
                        int erosion_base)
-      : p_(p), history_(history), axes_(axes), initial_dt_(initial_dt), base_(erosion_base) {}
+      : p_(p), history_(history), axes_(axes), initial_dt_(initial_dt), base_(erosion_base),
+        intact_lanes_(composite_intact_lanes_apply(p)) {}
 
   PLYIMPACT_LANE_KERNEL void update(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) {
+    if (!intact_lanes_) {
+      for (int l = 0; l < kLanes; ++l) update_lane(p, s_old, s, erode, l);
+      return;
+    }
+    // Intact points in SIMD lanes (composite_damage_intact_lanes.hpp); a lane that is not intact or
+    // meets a criterion or an erosion limit in this cycle takes the general update.
+    alignas(64) double Qo[9][kLanes], intact[kLanes];
+    IntactLaneHistory h;
     for (int l = 0; l < kLanes; ++l) {
-      for (int i = 0; i < 6; ++i) s[i][l] = 0;
-      if (l >= p.n || !p.ok[l]) continue;
       const Index e = p.elem[l];
-      const double* Qo = &axes_[9 * std::size_t(e)];
-      double Qn[9], Rl[9];
-      for (int i = 0; i < 9; ++i) Rl[i] = p.R[i][l];
-      rotate_axes(Qo, Rl, Qn);
-      double sl[6], Dl[6];
-      for (int i = 0; i < 6; ++i) sl[i] = s_old[i][l], Dl[i] = p.D[i][l];
-      CompositeDamageContext ctx;
-      ctx.element_dt = p.dt > 0 ? p.element_dt[l] : 0.0;
-      ctx.initial_dt = initial_dt_[e];
-      const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl,
-                                              &history_[std::size_t(e) * kCompositeDamageHistory]);
-      for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
-      for (int i = 0; i < 9; ++i) qnew_[i][l] = Qn[i];
-      if (res.erode) erode[l] = base_ + res.cause;
+      const double* hl = &history_[std::size_t(e) * kCompositeDamageHistory];
+      for (int i = 0; i < 9; ++i) Qo[i][l] = axes_[9 * std::size_t(e) + i];
+      for (int i = 0; i < 6; ++i) h.eps[i][l] = hl[composite_history::kStrain + i];
+      h.XT[l] = hl[composite_history::kXT], h.XC[l] = hl[composite_history::kXC];
+      h.crashfront[l] = hl[composite_history::kCrashfront];
+      h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
+      h.element_dt[l] = p.dt > 0 ? p.element_dt[l] : 0.0;
+      h.initial_dt[l] = initial_dt_[e];
+      intact[l] = composite_damage_intact(hl) ? 1.0 : 0.0;
+    }
+    IntactLaneResult r;
+    composite_intact_lanes(p_, Qo, p.R, s_old, p.D, p.dt, h, r);
+    for (int l = 0; l < kLanes; ++l) {
+      if (l >= p.n || !p.ok[l] || intact[l] == 0 || r.event[l] != 0) {
+        update_lane(p, s_old, s, erode, l);
+        continue;
+      }
+      double* hl = &history_[std::size_t(p.elem[l]) * kCompositeDamageHistory];
+      for (int i = 0; i < 6; ++i) hl[composite_history::kStrain + i] = r.eps[i][l];
+      for (int m = 0; m < 4; ++m) hl[composite_history::kCriteria + m] = r.criteria[m][l];
+      for (int i = 0; i < 6; ++i) s[i][l] = r.s[i][l];
+      for (int i = 0; i < 9; ++i) qnew_[i][l] = r.Qn[i][l];
     }
   }
   // composite_damage_lost_components of element e's point (ELFORM 1: one point per element).
@@ -83,11 +99,33 @@ class CompositeDamageLanes {
   void end_element(Index e) { std::copy_n(qn_, 9, &axes_[9 * std::size_t(e)]); }
 
  private:
+  // The general point update of lane l (composite_point_update).
+  void update_lane(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes], int l) {
+    for (int i = 0; i < 6; ++i) s[i][l] = 0;
+    if (l >= p.n || !p.ok[l]) return;
+    const Index e = p.elem[l];
+    const double* Qo = &axes_[9 * std::size_t(e)];
+    double Qn[9], Rl[9];
+    for (int i = 0; i < 9; ++i) Rl[i] = p.R[i][l];
+    rotate_axes(Qo, Rl, Qn);
+    double sl[6], Dl[6];
+    for (int i = 0; i < 6; ++i) sl[i] = s_old[i][l], Dl[i] = p.D[i][l];
+    CompositeDamageContext ctx;
+    ctx.element_dt = p.dt > 0 ? p.element_dt[l] : 0.0;
+    ctx.initial_dt = initial_dt_[e];
+    const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl,
+                                            &history_[std::size_t(e) * kCompositeDamageHistory]);
+    for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
+    for (int i = 0; i < 9; ++i) qnew_[i][l] = Qn[i];
+    if (res.erode) erode[l] = base_ + res.cause;
+  }
+
   const CompositeDamageParams& p_;
   double* history_;
   double* axes_;
   const double* initial_dt_;
   int base_;
+  bool intact_lanes_;
   alignas(64) double qnew_[9][kLanes] = {};
   double qo_[9] = {}, qn_[9] = {};
   CompositeDamageContext ctx_;
