@@ -41,7 +41,7 @@ class CompositeDamageLanes {
 
   PLYIMPACT_LANE_KERNEL void update(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) {
     if (!intact_lanes_) {
-      for (int l = 0; l < kLanes; ++l) update_lane(p, s_old, s, erode, l);
+      for (int l = 0; l < kLanes; ++l) lost_change_[l] = -1, update_lane(p, s_old, s, erode, l);
       return;
     }
     // Intact points in SIMD lanes (composite_damage_intact_lanes.hpp); a lane that is not intact or
@@ -63,6 +63,7 @@ class CompositeDamageLanes {
     IntactLaneResult r;
     composite_intact_lanes(p_, Qo, p.R, s_old, p.D, p.dt, h, r);
     for (int l = 0; l < kLanes; ++l) {
+      lost_change_[l] = -1;
       if (l >= p.n || !p.ok[l] || intact[l] == 0 || r.event[l] != 0) {
         update_lane(p, s_old, s, erode, l);
         continue;
@@ -74,10 +75,9 @@ class CompositeDamageLanes {
       for (int i = 0; i < 9; ++i) qnew_[i][l] = r.Qn[i][l];
     }
   }
-  // composite_damage_lost_components of element e's point (ELFORM 1: one point per element).
-  int lost_components(Index e) const {
-    return composite_damage_lost_components(&history_[std::size_t(e) * kCompositeDamageHistory]);
-  }
+  // After update: the in-plane components lane l's point has lost (composite_damage_lost_components)
+  // if that set changed in this cycle, else -1 (an intact lane never changes it).
+  int lost_components_change(int l) const { return lost_change_[l]; }
   // The rotated axes of a surviving lane become the element's.
   void commit(Index e, int l) {
     for (int i = 0; i < 9; ++i) axes_[9 * std::size_t(e) + i] = qnew_[i][l];
@@ -104,6 +104,8 @@ class CompositeDamageLanes {
     for (int i = 0; i < 6; ++i) s[i][l] = 0;
     if (l >= p.n || !p.ok[l]) return;
     const Index e = p.elem[l];
+    double* h = &history_[std::size_t(e) * kCompositeDamageHistory];
+    const int lost_before = composite_damage_lost_components(h);
     const double* Qo = &axes_[9 * std::size_t(e)];
     double Qn[9], Rl[9];
     for (int i = 0; i < 9; ++i) Rl[i] = p.R[i][l];
@@ -113,8 +115,9 @@ class CompositeDamageLanes {
     CompositeDamageContext ctx;
     ctx.element_dt = p.dt > 0 ? p.element_dt[l] : 0.0;
     ctx.initial_dt = initial_dt_[e];
-    const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl,
-                                            &history_[std::size_t(e) * kCompositeDamageHistory]);
+    const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl, h);
+    const int lost = composite_damage_lost_components(h);
+    if (lost != lost_before) lost_change_[l] = lost;
     for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
     for (int i = 0; i < 9; ++i) qnew_[i][l] = Qn[i];
     if (res.erode) erode[l] = base_ + res.cause;
@@ -126,6 +129,7 @@ class CompositeDamageLanes {
   const double* initial_dt_;
   int base_;
   bool intact_lanes_;
+  int lost_change_[kLanes] = {};
   alignas(64) double qnew_[9][kLanes] = {};
   double qo_[9] = {}, qn_[9] = {};
   CompositeDamageContext ctx_;

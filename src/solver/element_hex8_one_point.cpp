@@ -91,11 +91,8 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     if (!blk.step_scale.empty())  // mass scaling (solver/mass_scaling.hpp)
       for (int l = 0; l < kLanes; ++l) dte[l] *= blk.step_scale[elem[l]];
 
-    // Material update (IHQ 6 follows the components a failing material loses: lost_before/after).
-    constexpr bool kFollowsLoss = HG::kAssumedStrain && requires(const Material& m) { m.lost_components(Index{}); };
-    [[maybe_unused]] int lost_before[kLanes] = {};
-    if constexpr (kFollowsLoss)
-      for (int l = 0; l < kLanes; ++l) lost_before[l] = material.lost_components(elem[l]);
+    // Material update (IHQ 6 follows the components a failing material loses in it).
+    constexpr bool kFollowsLoss = HG::kAssumedStrain && requires(const Material& m) { m.lost_components_change(0); };
     alignas(64) double s[6][kLanes], s_old[6][kLanes];
     int erode_cause[kLanes] = {};  // > 0: the material failed (ErosionCause)
     for (int l = 0; l < kLanes; ++l)
@@ -158,8 +155,8 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
       bool rescaled = false;  // Qa differs from Qs only in a cycle where some lane's material failed
       if constexpr (kFollowsLoss)
         for (int l = 0; l < n; ++l) {
-          const int lost = material.lost_components(elem[l]);
-          if (!ok[l] || lost == lost_before[l]) continue;
+          const int lost = material.lost_components_change(l);
+          if (!ok[l] || lost < 0) continue;
           if (!rescaled) std::copy(&Qs[0][0], &Qs[0][0] + 12 * kLanes, &Qa[0][0]);
           rescaled = true;
           follow_lost_components(model, blk, st, elem[l], lost, Jx, l, Hm, Qa);
