@@ -11,7 +11,7 @@ long BucketGrid::bucket_of(double x, int d) const {
   return std::clamp(long(std::floor((x - lo_[d]) / cell_)), 0L, dims_[d] - 1);
 }
 
-void BucketGrid::build(std::span<const double> boxes, double cell_hint) {
+void BucketGrid::build(std::span<const double> boxes, double cell_hint, std::span<const unsigned char> keep) {
   const std::size_t n = boxes.size() / 6;
   if (n == 0) {
     offsets_.assign(1, 0);
@@ -20,7 +20,7 @@ void BucketGrid::build(std::span<const double> boxes, double cell_hint) {
   }
   const int threads = n >= kParallelMinItems ? omp_get_max_threads() : 1;
   size_grid(boxes, cell_hint, threads);
-  list_items(boxes, threads);
+  list_items(boxes, keep, threads);
 }
 
 void BucketGrid::size_grid(std::span<const double> boxes, double cell_hint, int threads) {
@@ -46,9 +46,10 @@ void BucketGrid::size_grid(std::span<const double> boxes, double cell_hint, int 
   for (int d = 0; d < 3; ++d) dims_[d] = std::max(1L, long(std::ceil((hi[d] - lo_[d]) / cell_)));
 }
 
-void BucketGrid::list_items(std::span<const double> boxes, int threads) {
+void BucketGrid::list_items(std::span<const double> boxes, std::span<const unsigned char> keep, int threads) {
   const std::size_t n = boxes.size() / 6, nb = std::size_t(dims_[0] * dims_[1] * dims_[2]);
   auto for_buckets = [&](std::size_t i, auto&& fn) {
+    if (!keep.empty() && !keep[i]) return;
     long b0[3], b1[3];
     for (int d = 0; d < 3; ++d) {
       b0[d] = bucket_of(boxes[6 * i + d], d);

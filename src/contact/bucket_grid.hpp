@@ -19,7 +19,9 @@ class BucketGrid {
  public:
   // boxes: (num_items, 6) lo_x lo_y lo_z hi_x hi_y hi_z, already expanded by the search margin.
   // cell_hint: requested bucket edge (m), enlarged when the grid would have too many buckets.
-  void build(std::span<const double> boxes, double cell_hint);
+  // keep: (num_items) 0 = leave the item out of the buckets (empty: list every item). The grid's
+  // extent and buckets come from all boxes, so the items kept are listed exactly as without it.
+  void build(std::span<const double> boxes, double cell_hint, std::span<const unsigned char> keep = {});
 
   // Items whose expanded box overlaps the bucket containing p; empty outside the grid.
   std::span<const Index> candidates(const double* p) const;
@@ -35,7 +37,7 @@ class BucketGrid {
   // The grid's origin, bucket edge and dimensions from the boxes' extent and the requested edge.
   void size_grid(std::span<const double> boxes, double cell_hint, int threads);
   // offsets_ and items_: every item in each bucket its box overlaps, in item order.
-  void list_items(std::span<const double> boxes, int threads);
+  void list_items(std::span<const double> boxes, std::span<const unsigned char> keep, int threads);
   double lo_[3] = {0, 0, 0};
   double cell_ = 1;
   long dims_[3] = {0, 0, 0};

@@ -73,37 +73,6 @@ PassMotion SegmentSearch::begin_pass(const SegmentSet& set, const double* x, con
 }
 
 void SegmentSearch::sort(const SegmentSet& set, const double* x, double step_depth, bool full_depth) {
-  // One grid per side (two-way contact): a contact node only walks the other side's segments.
-  for (int side = 0; side < (set.single() ? 1 : 2); ++side) {
-    const auto& ids = side_segs_[side];
-    auto& boxes = boxes_[side];
-    boxes.resize(6 * ids.size());
-    const long J = long(ids.size());
-#pragma omp parallel for schedule(static) if (parallel_for(ids.size()))
-    for (long jl = 0; jl < J; ++jl) {
-      const std::size_t j = std::size_t(jl), s = std::size_t(ids[j]);
-      const Index* q = set.segment_nodes(s);
-      double* b = &boxes[6 * j];
-      for (int d = 0; d < 3; ++d) {
-        b[d] = 1e300;
-        b[3 + d] = -1e300;
-      }
-      for (int k = 0; k < 4; ++k)
-        for (int d = 0; d < 3; ++d) {
-          const double c = x[3 * std::size_t(q[k]) + d];
-          b[d] = std::min(b[d], c - margin_[s]);
-          b[3 + d] = std::max(b[3 + d], c + margin_[s]);
-        }
-    }
-    grid_[side].build(boxes, cell_);
-  }
-  const std::vector<Index>& nodes = set.force_nodes();
-  const long U = long(nodes.size());
-#pragma omp parallel for schedule(static) if (parallel_for(nodes.size()))
-  for (long u = 0; u < U; ++u)
-    for (int d = 0; d < 3; ++d) x_sort_[3 * std::size_t(u) + d] = x[3 * std::size_t(nodes[std::size_t(u)]) + d];
-  cycles_since_sort_ = 0;
-  ++sorts_;
   // The lists are built for the motion expected before the next sort, not for the whole bucket
   // allowance: a node moving at the present largest speed covers BSORT dt v_max = BSORT
   // step_depth / 4 until the next sort, an eighth of this list allowance (a re-sort comes first if
@@ -113,8 +82,94 @@ void SegmentSearch::sort(const SegmentSet& set, const double* x, double step_dep
   // motion per step grows beyond it), at least an eighth of the list allowance.
   list_allowance_ = std::min(allowance_, std::max(0.2 * allowance_, 2.0 * double(options_.BSORT) * step_depth));
   new_depth_cap_ = std::max(2 * step_depth, 0.125 * list_allowance_);
-  refresh_all(set, x);
+  double node_box[2][6];
+  querying_node_boxes(set, x, node_box);
+  // One grid per side (two-way contact): a contact node only walks the other side's segments.
+  for (int side = 0; side < (set.single() ? 1 : 2); ++side) {
+    segment_boxes(set, side, x, node_box[side]);
+    grid_[side].build(boxes_[side], cell_, keep_[side]);
+  }
+  const std::vector<Index>& nodes = set.force_nodes();
+  const long U = long(nodes.size());
+#pragma omp parallel for schedule(static) if (parallel_for(nodes.size()))
+  for (long u = 0; u < U; ++u)
+    for (int d = 0; d < 3; ++d) x_sort_[3 * std::size_t(u) + d] = x[3 * std::size_t(nodes[std::size_t(u)]) + d];
+  cycles_since_sort_ = 0;
+  ++sorts_;
+  refresh_listed(set, x);
   build_candidates(set, x, full_depth);
+}
+
+void SegmentSearch::querying_node_boxes(const SegmentSet& set, const double* x, double (&box)[2][6]) const {
+  // Per side, the bounding box of the contact nodes that search that side's segments.
+  for (auto& b : box) b[0] = b[1] = b[2] = 1e300, b[3] = b[4] = b[5] = -1e300;
+  const std::size_t N = set.num_nodes();
+  for (int side = 0; side < (set.single() ? 1 : 2); ++side) {
+    double lo0 = 1e300, lo1 = 1e300, lo2 = 1e300, hi0 = -1e300, hi1 = -1e300, hi2 = -1e300;  // exact in any order
+#pragma omp parallel for schedule(static) if (parallel_for(N)) reduction(min : lo0, lo1, lo2) \
+    reduction(max : hi0, hi1, hi2)
+    for (long il = 0; il < long(N); ++il) {
+      const std::size_t i = std::size_t(il);
+      if (set.other_side(i) != side) continue;
+      const double* p = &x[3 * std::size_t(set.node_id(i))];
+      lo0 = std::min(lo0, p[0]), lo1 = std::min(lo1, p[1]), lo2 = std::min(lo2, p[2]);
+      hi0 = std::max(hi0, p[0]), hi1 = std::max(hi1, p[1]), hi2 = std::max(hi2, p[2]);
+    }
+    box[side][0] = lo0, box[side][1] = lo1, box[side][2] = lo2, box[side][3] = hi0, box[side][4] = hi1, box[side][5] = hi2;
+  }
+}
+
+void SegmentSearch::segment_boxes(const SegmentSet& set, int side, const double* x, const double (&nodes)[6]) {
+  // Each segment's box (its nodes' box expanded by its margin) for the grid, and whether any node
+  // that searches this side can pass build_candidates' sphere test on it before the next sort. The
+  // test accepts |p - c| <= r_factor (r + a/2) + depth + a/2 with depth <= the release depth, and
+  // the centre c lies in the segment's node box, whose diagonal bounds the radius r; a segment
+  // whose node box, widened by that reach, misses the querying nodes' box is in no list, so it is
+  // left out of the buckets (and of the refresh at the sort), which changes no list. In an impact
+  // the plate's faces far from the tup are all such segments.
+  const auto& ids = side_segs_[side];
+  auto& boxes = boxes_[side];
+  auto& keep = keep_[side];
+  boxes.resize(6 * ids.size());
+  keep.resize(ids.size());
+  const double r_factor = 1 + 2 * std::max(options_.MAXPAR - 1, 0.0), half_a = 0.5 * list_allowance_;
+  const long J = long(ids.size());
+#pragma omp parallel for schedule(static) if (parallel_for(ids.size()))
+  for (long jl = 0; jl < J; ++jl) {
+    const std::size_t j = std::size_t(jl), s = std::size_t(ids[j]);
+    const Index* q = set.segment_nodes(s);
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 3; ++d) {
+        const double c = x[3 * std::size_t(q[k]) + d];
+        lo[d] = std::min(lo[d], c);
+        hi[d] = std::max(hi[d], c);
+      }
+    double* b = &boxes[6 * j];
+    double diag2 = 0;
+    for (int d = 0; d < 3; ++d) {
+      b[d] = lo[d] - margin_[s];
+      b[3 + d] = hi[d] + margin_[s];
+      diag2 += (hi[d] - lo[d]) * (hi[d] - lo[d]);
+    }
+    // Widened by 1e-6 for the radius kept as a float rounded up.
+    const double reach = (r_factor * (std::sqrt(diag2) + half_a) + set.release_depth(s) + half_a) * (1 + 1e-6);
+    bool meets = true;
+    for (int d = 0; d < 3; ++d) meets = meets && lo[d] - reach <= nodes[3 + d] && hi[d] + reach >= nodes[d];
+    keep[j] = meets ? 1 : 0;
+  }
+}
+
+void SegmentSearch::refresh_listed(const SegmentSet& set, const double* x) {
+  // The records build_candidates reads; every other record is refreshed where it is read (record()).
+  for (int side = 0; side < (set.single() ? 1 : 2); ++side) {
+    const auto& ids = side_segs_[side];
+    const auto& keep = keep_[side];
+    const long J = long(ids.size());
+#pragma omp parallel for schedule(static) if (parallel_for(ids.size()))
+    for (long j = 0; j < J; ++j)
+      if (keep[std::size_t(j)]) refresh_segment(set, std::size_t(ids[std::size_t(j)]), x);
+  }
 }
 
 void SegmentSearch::build_candidates(const SegmentSet& set, const double* x, bool full_depth) {

@@ -130,6 +130,11 @@ class SegmentSearch {
   void refresh_segment(const SegmentSet& set, std::size_t s, const double* x);
   // record()'s slow path: claim the stale record and refresh it, or wait for the thread that did.
   void refresh_claimed(const SegmentSet& set, std::size_t s, const double* x);
+  // Parts of sort (segment_search.cpp): the querying nodes' boxes per side; one side's segment
+  // boxes and which can be in a list (keep_); the records of those.
+  void querying_node_boxes(const SegmentSet& set, const double* x, double (&box)[2][6]) const;
+  void segment_boxes(const SegmentSet& set, int side, const double* x, const double (&nodes)[6]);
+  void refresh_listed(const SegmentSet& set, const double* x);
 
   SearchOptions options_;
   AlignedVector<double, 128> records_;  // (S, kRecord)
@@ -138,6 +143,7 @@ class SegmentSearch {
   BucketGrid grid_[2];                  // per side (single surface: [0] only)
   std::vector<Index> side_segs_[2];     // grid item -> segment
   std::vector<double> boxes_[2];        // scratch of sort
+  std::vector<unsigned char> keep_[2];  // scratch of sort: grid item can be in a list (segment_boxes)
   std::vector<double> margin_;          // (S) search margin of each segment's box, m
   double allowance_ = 0, cell_ = 0;     // bucket allowance (a quarter of the median extent), bucket edge
   double new_depth_cap_ = 0;            // bound of the new-contact depth until the next sort, m

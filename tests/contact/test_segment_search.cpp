@@ -195,5 +195,59 @@ TEST(SegmentSet, RebuildKeepsTheIdentityOfWhatSurvives) {
   for (char c : r.new_node) EXPECT_EQ(c, 0);
 }
 
+// The sort lists in its buckets only the segments some node of the other side can reach before
+// the next sort (the plate faces far from a small body are left out). Whatever it leaves out, a
+// node's list must still hold every segment of the other side whose centre is within the list
+// test's reach of it and within the bucket allowance (a quarter of the median segment extent, so
+// the node lies inside the segment's expanded box and the bucket test cannot exclude it either).
+// Scene: a 2 x 2 x 1 block of 1 mm elements 0.1 mm over a 16 x 16 x 1 plate, shifted by half an
+// element, so each block node lies 0.1 mm over a plate face centre and four plate nodes lie 0.1 mm
+// under the block's face centres.
+TEST(SegmentSearch, ListsHoldEverySegmentWithinReachOfANode) {
+  const std::string yaml =
+      "units: SI\ncontrol: {termination_time: 1}\n"
+      "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+      "sections:\n  s: {ELFORM: 1}\n"
+      "parts:\n  plate: {material: steel, section: s}\n  block: {material: steel, section: s}\n"
+      "mesh:\n  merge_nodes: false\n  boxes:\n"
+      "    - {part: plate, size: [0.016, 0.016, 0.001], elements: [16, 16, 1]}\n"
+      "    - {part: block, origin: [0.0075, 0.0075, 0.0011], size: [0.002, 0.002, 0.001], elements: [2, 2, 1]}\n";
+  const model::Model model = test::model_from_yaml(yaml, "block_over_plate.yaml");
+  const double* x = model.X.data();
+  for (bool full_depth : {true, false}) {
+    SCOPED_TRACE(full_depth ? "full depth" : "new-contact depth");
+    contact::SegmentSetSpec spec;
+    spec.blocks[0] = {model.parts[0].block};
+    spec.blocks[1] = {model.parts[1].block};
+    contact::SegmentSet set(model, spec, model.X);
+    contact::SegmentSearch search{contact::SearchOptions{}};
+    search.reset(set, x);
+    search.sort(set, x, 0.0, full_depth);
+    const double cap = search.new_depth_cap();
+    const double half_a = 4 * cap;  // with step_depth 0 the sort sets cap = list allowance / 8
+    const double allowance = 0.25 * std::sqrt(2.0) * 1e-3;  // median extent: a 1 mm face's diagonal
+    const double r_factor = 1 + 2 * (search.options().MAXPAR - 1);
+    int expected = 0;
+    for (std::size_t i = 0; i < set.num_nodes(); ++i) {
+      const double* p = &x[3 * std::size_t(set.node_id(i))];
+      const auto list = search.candidates(i);
+      for (std::size_t s = 0; s < set.num_segments(); ++s) {
+        if (set.segment_side(s) != set.other_side(i)) continue;
+        const double* g = search.record(set, s, x);
+        const double depth = full_depth ? g[7] : std::min(g[7], cap + 0.02 * g[7]);
+        const double reach = r_factor * (double(contact::SegmentSearch::radius(g)) + half_a) + depth + half_a;
+        const double d = std::sqrt((p[0] - g[0]) * (p[0] - g[0]) + (p[1] - g[1]) * (p[1] - g[1]) + (p[2] - g[2]) * (p[2] - g[2]));
+        if (d > std::min(reach, allowance)) continue;
+        ++expected;
+        EXPECT_NE(std::find(list.begin(), list.end(), Index(s)), list.end())
+            << "node " << set.node_id(i) << " lacks segment " << s << " at " << d << " m";
+      }
+    }
+    // The 9 block nodes, each over a plate face centre, and the 4 plate nodes under the block's
+    // 4 bottom face centres; every other centre is at least 0.5 mm away.
+    EXPECT_EQ(expected, 13);
+  }
+}
+
 }  // namespace
 }  // namespace plyimpact
