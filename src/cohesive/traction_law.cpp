@@ -15,6 +15,7 @@ TractionLaw make_traction_law(const TractionLawParams& p) {
   law.delta_n0 = p.NFLS / law.kn;
   law.delta_s0 = p.SFLS / law.kt;
   law.k_max = std::max(law.kn, law.kt);
+  law.elastic_limit = std::min(law.delta_n0, law.delta_s0) * (1 - 1e-12);
   law.mu = p.FS;
   switch (p.option) {
     case TiebreakOption::StressCcrit:

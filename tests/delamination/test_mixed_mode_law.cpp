@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <cstring>
 #include <numbers>
+#include <random>
 
 #include "law_paths.hpp"
 
@@ -276,6 +278,48 @@ TEST(MixedModeLaw, SeparatedPointIsContactWithCoulombFriction) {
   EXPECT_EQ(test::norm3(last.r.traction), 0.0);
   EXPECT_EQ(last.r.elastic_energy, 0.0);
   EXPECT_NEAR(last.r.dissipated_increment, 0.5 * limit * limit / kt, 1e-9 * limit * stick);
+}
+
+
+// The shortcut below every onset (TractionLaw::elastic_limit) must leave each update exactly as
+// the damage growth would: random openings on random rays around the smaller single-mode onset,
+// on loading paths from random histories, with the shortcut and without it (elastic_limit = 0),
+// for the power law, B-K, OPTION 6 and unequal NFLS / SFLS; history and response bit-identical.
+TEST(MixedModeLaw, ElasticShortcutChangesNoUpdate) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u01(0, 1), sym(-1, 1);
+  int shortcut = 0;
+  for (int variant = 0; variant < 4; ++variant) {
+    TractionLawParams p;
+    p.option = variant == 2 ? TiebreakOption::StressCcrit : TiebreakOption::MixedMode;
+    p.NFLS = 60e6, p.SFLS = variant == 3 ? 90e6 : 60e6, p.CN = 1e14, p.CT2CN = variant == 3 ? 0.5 : 1;
+    p.ERATEN = 765, p.ERATES = 1250;
+    p.PARAM = variant == 1 ? -1.45 : variant == 2 ? 2e-5 : 1.0;
+    if (p.option == TiebreakOption::StressCcrit) p.ERATEN = p.ERATES = kMissing;
+    const TractionLaw with = make_traction_law(p);
+    TractionLaw without = with;
+    without.elastic_limit = 0;
+    ASSERT_GT(with.elastic_limit, 0);
+    const double scale = std::min(with.delta_n0, with.delta_s0);
+    for (int path = 0; path < 400; ++path) {
+      PointHistory ha, hb;
+      ha.max_opening = hb.max_opening = scale * 0.5 * u01(rng);
+      for (int step = 0; step < 8; ++step) {
+        const double size = scale * (0.2 + 1.0 * u01(rng));  // around the smaller onset
+        const double c = sym(rng), s1 = sym(rng), s2 = sym(rng);
+        const double len = std::sqrt(c * c + s1 * s1 + s2 * s2);
+        const double uo[3] = {size * c / len, size * s1 / len, size * s2 / len};
+        const double open = std::sqrt(std::pow(std::max(uo[0], 0.0), 2) + uo[1] * uo[1] + uo[2] * uo[2]);
+        if (open > ha.max_opening && open <= with.elastic_limit) ++shortcut;
+        PointResponse ra, rb;
+        traction_update(with, uo, ha, ra);
+        traction_update(without, uo, hb, rb);
+        ASSERT_EQ(std::memcmp(&ha, &hb, sizeof ha), 0) << "variant " << variant << " path " << path;
+        ASSERT_EQ(std::memcmp(&ra, &rb, sizeof ra), 0) << "variant " << variant << " path " << path;
+      }
+    }
+  }
+  EXPECT_GT(shortcut, 1000);  // the shortcut was taken often enough for the comparison to count
 }
 
 }  // namespace
