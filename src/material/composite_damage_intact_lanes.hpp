@@ -4,8 +4,11 @@
 // Why: almost every point of an impact scene is intact almost all the time, and the general point
 // update (a scalar call per point, with the degradation box, the return and the failure passes)
 // cost about a fifth of the default scene's cycle on one core.
-// The arithmetic is that of the general update, operation for operation (no FMA contraction under
-// ISO C++), so a lane's result is bit-identical to it; the test Mat054Lanes checks that. A lane
+// The arithmetic is that of the general update, expression for expression: GCC contracts
+// a * b + c into fused multiply-adds by default (-ffp-contract=fast), and it does so alike in the
+// general update and in these lanes as long as the expressions are the same, so a lane's result is
+// bit-identical to it. The test Mat054Lanes checks that on random points; a compiler that
+// contracted the two differently would differ in the last bits only, and fail that test. A lane
 // whose `event` is 1 (a criterion >= 0 or an erosion limit reached) must be redone by the general
 // update from its unchanged inputs: this kernel writes nothing but its outputs.
 // Not covered (the caller uses the general update for the whole material): EPSF > 0, whose
