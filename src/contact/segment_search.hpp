@@ -68,7 +68,7 @@ class SegmentSearch {
     const double lim2 = 0.25 * list_allowance_ * 0.25 * list_allowance_;
     return cycles_since_sort_ >= options_.BSORT || motion.moved2 > lim2 || step_depth > new_depth_cap_;
   }
-  // Bucket sort at x, refresh of every record and node normal, candidate lists. step_depth: the
+  // Bucket sort at x, refresh of the records the lists may reach, candidate lists. step_depth: the
   // largest new-contact depth of the present pass, which bounds the lists' depth cap; full_depth:
   // lists for any depth (initial-penetration check, the pass after a rebuild).
   void sort(const SegmentSet& set, const double* x, double step_depth, bool full_depth);
