@@ -80,12 +80,14 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     // the initial step. Le: characteristic length V / A_max (step, bulk viscosity).
     alignas(64) double dte[kLanes], Le[kLanes];
     alignas(64) double Qstep[kLanes];  // Q of the step: held one in, this cycle's out (step_q)
-    alignas(64) double c_step[kLanes];  // wave speed of the step (directional_step.hpp)
+    // Wave speed of the element's fastest mode (directional_step.hpp): the step's and the bulk
+    // viscosity's, so that the viscosity damps that mode at Q2 (element_step.hpp, bulk_viscosity).
+    alignas(64) double c_step[kLanes];
     for (int l = 0; l < kLanes; ++l) Qstep[l] = st.step_q[elem[l]];
     for (int l = 0; l < kLanes; ++l) c_step[l] = st.step_wave_speed.empty() ? c : st.step_wave_speed[elem[l]];
     element::hex8_characteristic_length_lanes(xe, V, Le);
     PLYIMPACT_LANES {
-      Qstep[l] = step_q(Le[l], c, trD[l], q1, q2, Qstep[l]);
+      Qstep[l] = step_q(Le[l], c_step[l], trD[l], q1, q2, Qstep[l]);
       dte[l] = element_time_step(Le[l], c_step[l], Qstep[l]);
     }
     if (!blk.step_scale.empty())  // mass scaling (solver/mass_scaling.hpp)
@@ -119,7 +121,7 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
     for (int l = 0; l < kLanes; ++l) q_old[l] = st.bulk_q[elem[l]];
     PLYIMPACT_LANES {
       const double ll = Le[l];
-      q[l] = trD[l] < 0 ? rho[l] * ll * (q1 * ll * trD[l] * trD[l] - q2 * c * trD[l]) : 0.0;
+      q[l] = trD[l] < 0 ? rho[l] * ll * (q1 * ll * trD[l] * trD[l] - q2 * c_step[l] * trD[l]) : 0.0;
       dQ_old[l] = -0.5 * q_old[l] * trD[l] * V[l] * dt;
       dQ[l] = dQ_old[l] - 0.5 * q[l] * trD[l] * V[l] * dt;
     }

@@ -45,6 +45,10 @@ inline double step_q(double L, double c, double trD, double q1, double q2, doubl
 // flat element (aspect A, l/L = A^(2/3)) is damped far harder than the step allows: the Hertz
 // block's 10.8 x 10.8 x 0.083 mm corner elements had l/L = 25.6, xi = 1.54, a limit of 0.30 L/c,
 // and blew up at TSSFAC 0.8-0.9 (tests/core/test_bulk_viscosity_step.cpp).
+// c is the step's wave speed for the same reason: a ply element steps at its thickness wave
+// (directional_step.hpp), 3.6x slower than its fibre wave, and with the fibre wave here its
+// thickness mode would be damped at 3.6 Q2 (xi = 0.22 at Q2 = 0.06) instead of Q2; step_q takes the
+// same c, so the step stays that mode's damped limit.
 inline double bulk_viscosity(double rho, double L, double c, double trD, double q1, double q2) {
   if (trD >= 0) return 0.0;
   return rho * L * (q1 * L * trD * trD - q2 * c * trD);

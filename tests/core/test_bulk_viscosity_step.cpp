@@ -36,6 +36,7 @@
 #include <cmath>
 #include <string>
 
+#include "hourglass/element_elasticity.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -109,6 +110,56 @@ TEST(BulkViscosityStep, FlatElementThicknessModeIsDampedAtQ2) {
       EXPECT_NEAR(ratio / expected, 1.0, 5e-3) << "ELFORM " << elform << ", aspect " << aspect << ": u_min omega / v0 = "
                                                << ratio << ", damped oscillator with xi = Q2: " << expected;
     }
+}
+
+// A one-point T800S/M21 ply element (the default scene's card as *MAT_002, fibres along x, aspect
+// 20) steps at its thickness wave c_step = sqrt(C33 / rho) (solver/directional_step.hpp), 3.6x
+// slower than its fibre wave. Its thickness mode, omega = 2 c_step / t, must be damped at Q2 as the
+// isotropic element's is: the viscosity takes the step's wave speed. (With the fibre wave in the
+// linear term, xi = Q2 c_fibre / c_step = 0.22 and u_min omega / v0 = 0.73 instead of 0.913.)
+// Independent answer and tolerance as in the isotropic check above; c_step differs from
+// sqrt(C33 / rho) by the in-plane modes' share of the eigenvalue, (1/20)^2 / 2 in speed, 1e-4 in
+// u_min.
+TEST(BulkViscosityStep, OrthotropicPlyThicknessModeIsDampedAtQ2) {
+  const double t = 0.25e-3, side = 20 * t, v0 = 0.1;
+  const std::string a = std::to_string(side), th = std::to_string(t);
+  model::Model model = test::model_from_yaml(
+      "units: SI\ncontrol: {termination_time: 1.0, energy_ratio_limit: 0, tssfac: 0.02}\n"
+      "materials:\n  m: {card: MAT_002, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.01895, PRCA: 0.01895,"
+      " PRCB: 0.53, GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0]}\n"
+      "sections:\n  s: {ELFORM: 1, IHQ: 6, QM: 1, Q1: 0, Q2: 0.06}\n"
+      "parts:\n  ply: {material: m, section: s}\n"
+      "mesh:\n  boxes:\n    - {part: ply, size: [" + a + ", " + a + ", " + th + "], elements: [1, 1, 1]}\n"
+      "node_sets:\n  all_nodes: all\nboundary_conditions:\n  - {node_set: all_nodes, fix: [x, y]}\n",
+      "ply.yaml");
+  std::vector<Index> top, bottom;
+  for (std::size_t n = 0; n < model.num_nodes(); ++n) {
+    const bool is_top = model.X[3 * n + 2] > 0.5 * t;
+    (is_top ? top : bottom).push_back(Index(n));
+    model.v0[3 * n + 2] = is_top ? -0.5 * v0 : 0.5 * v0;
+  }
+  const material::Stiffness6 C = hourglass::stiffness_in_material_axes(model.materials[0]);
+  const double c33 = std::sqrt(C[6 * 2 + 2] / 1550), omega = 2 * c33 / t;
+  ASSERT_LT(c33, 0.3 * model.materials[0].wave_speed) << "the element must step at its thickness wave";
+  solver::Solver s(model);
+  auto closing = [&] {
+    double u = 0;
+    for (Index n : top) u += s.state().x[3 * std::size_t(n) + 2] / double(top.size());
+    for (Index n : bottom) u -= s.state().x[3 * std::size_t(n) + 2] / double(bottom.size());
+    return u - t;
+  };
+  double u_min = 0, u_prev = 0;
+  for (int i = 0; i < 20000; ++i) {
+    s.step();
+    const double u = closing();
+    u_min = std::min(u_min, u);
+    if (u > u_prev && u < 0) break;  // the first compression has ended
+    u_prev = u;
+  }
+  const double xi = 0.06, expected = std::exp(-xi * std::acos(xi) / std::sqrt(1 - xi * xi));
+  const double ratio = -u_min * omega / v0;
+  EXPECT_NEAR(ratio / expected, 1.0, 5e-3) << "u_min omega / v0 = " << ratio << ", damped oscillator with xi = Q2: "
+                                           << expected;
 }
 
 TEST(BulkViscosityStep, FlatElementStableAtDefaultTssfac) {

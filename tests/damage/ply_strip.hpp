@@ -57,10 +57,11 @@ StripBalance run_ply_strip(model::Model model, double v_mid, double tssfac, doub
   return r;
 }
 
-// What both strip tests assert of the same run at TSSFAC 0.9 (coarse) and 0.45 (fine): the hourglass
-// modes hold a share of the energy; the balance error vanishes as dt^2 (a ratio above 3, where 4 is
-// dt^2 and energy created or destroyed at a failure would give about 1); it stays below 1e-3 of the
-// initial energy at 0.45, a tenth of the default scene's budget, and below that budget at 0.9.
+// What both strip tests assert of the same run at two steps, the fine one half the coarse (TSSFAC
+// 0.9 and 0.45, or 0.45 and 0.225): the hourglass modes hold a share of the energy; the balance
+// error vanishes as dt^2 (a ratio above 3, where 4 is dt^2 and energy created or destroyed at a
+// failure would give about 1); it stays below 1e-3 of the initial energy at the fine step, a tenth
+// of the default scene's budget, and below that budget at the coarse one.
 inline void expect_second_order_balance(const StripBalance& coarse, const StripBalance& fine) {
   EXPECT_GT(coarse.hg_max, 1e-3) << "the hourglass modes should hold a share of the energy";
   EXPECT_GT(coarse.worst / fine.worst, 3.0) << "the balance error should vanish as dt^2";

@@ -14,10 +14,16 @@
 //   P_c = 4 b / (3 (a + Delta_II)) sqrt(E11 h^3 G_IIc); with a0 / L = 0.6 < 0.7 the growth is
 //   unstable, so P_c is the peak load.
 // Tolerances:
-//   - compliance within 5 % at every mesh (fit of deflection against load over 0.3 .. 0.8 P_c, the
-//     load averaged over 0.1 ms): beam theory with these corrections agrees with 2-D elasticity to
-//     ~2 % (Wang & Williams); it leaves out the local compliance at the load and support lines,
-//     a fraction of a per cent here;
+//   - compliance (fit of deflection against load over 0.3 .. 0.8 P_c, the load averaged over 0.1 ms)
+//     within 2 % plus the tip term at each mesh: beam theory with these corrections agrees with 2-D
+//     elasticity to ~2 % (Wang & Williams; it leaves out the local compliance at the load and
+//     support lines, a fraction of a per cent here), and the mesh places the crack tip only to
+//     within its segment: the first bonded pair's tributary half-segment is counted as open
+//     (a + seg / 2), uncertain by a quarter segment either way, so the tip term is the beam
+//     compliance's change over a quarter segment, C(a + seg / 4) / C(a) - 1: 3.6, 1.7, 0.8 % at
+//     5, 2.5, 1.25 mm. Measured +5.4, +2.5, +1.7 %, converging on the beam answer; at 5 mm about
+//     1 % of it depends on the bulk viscosity (Q1 = 0: +5.2 %; Q1 = Q2 = 0: +4.7 %, but that run
+//     does not complete) - a dynamic test's load carries the one-sided viscous pressure;
 //   - peak load within 15 % of P_c at the finest mesh: in mode II the process zone of a slender
 //     beam is long, of order sqrt(E11 h G_IIc) / SFLS = 9 mm (Massabo & Cox's scaling for slender
 //     bodies), a third of a0, so the cohesive peak lies below the LEFM value (the zone relieves the
@@ -104,12 +110,16 @@ TEST(ENF, ComplianceAndCriticalLoadAgainstBeamTheoryAtThreeMeshes) {
   for (double seg : {5.0, 2.5, 1.25}) {
     const EnfResult r = run_enf(seg);
     const double a_eff = a0 + seg * 1e-3 / 2;
-    const double c_beam = (3 * std::pow(a_eff + delta_ii(), 3) + 2 * L * L * L) / (8 * E11 * b * h * h * h) +
-                          L / (2 * 5.0 / 6.0 * G13 * b * 2 * h);
+    const auto beam_compliance = [](double a) {
+      return (3 * std::pow(a + delta_ii(), 3) + 2 * L * L * L) / (8 * E11 * b * h * h * h) +
+             L / (2 * 5.0 / 6.0 * G13 * b * 2 * h);
+    };
+    const double c_beam = beam_compliance(a_eff);
+    const double tolerance = 0.02 + beam_compliance(a_eff + seg * 1e-3 / 4) / c_beam - 1;
     const double p_c = 4 * b / (3 * (a_eff + delta_ii())) * std::sqrt(E11 * h * h * h * GIIc);
     std::printf("  %5.3f mm  %8ld  %+14.2f %%  %+13.2f %%  %5.1f s\n", seg, r.elements,
                 100 * (r.compliance / c_beam - 1), 100 * (r.peak / p_c - 1), r.wall);
-    EXPECT_NEAR(r.compliance / c_beam, 1.0, 0.05) << "segment " << seg << " mm";
+    EXPECT_NEAR(r.compliance / c_beam, 1.0, tolerance) << "segment " << seg << " mm";
     if (seg < 2) {
       EXPECT_NEAR(r.peak / p_c, 1.0, 0.15);
     }
