@@ -111,7 +111,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
   ContactEnergyCheck contact_energy(model);
   ContactPenetrationCheck penetrations(options.progress);
-  EnergyRatioCheck energy_ratio;
+  EnergyBalanceCheck energy_balance(history_interval);
   SummaryWriter summary(model, options.output_dir / "summary.json", t_start);
   std::unique_ptr<ProgressLine> progress;
   if (options.progress) progress = std::make_unique<ProgressLine>(*options.progress, options.progress_in_place, t_end, t_start);
@@ -119,7 +119,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   // Stop order is the order of the warnings in summary.json; the summary comes last.
   std::vector<RunObserver*> observers = {&frames, &interfaces, &history};
   if (progress) observers.push_back(progress.get());
-  for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &penetrations, &energy_ratio, &summary})
+  for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &penetrations, &energy_balance, &summary})
     observers.push_back(o);
 
   LoopOptions loop;

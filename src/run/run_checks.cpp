@@ -92,9 +92,28 @@ void ContactPenetrationCheck::stop(const solver::Solver* solver, RunReport& repo
   }
 }
 
-void EnergyRatioCheck::stop(const solver::Solver* solver, RunReport& report) {
-  if (solver && std::abs(report.energy_ratio - 1.0) > kTolerance)
-    report.warnings.push_back("energy ratio " + std::to_string(report.energy_ratio) + " differs from 1 by more than 5%");
+void EnergyBalanceCheck::observe(const solver::Solver& solver) {
+  watch_.observe(solver.balance(), solver.energy_ratio(), reference_energy(solver), solver.state().cycle);
+}
+
+void EnergyBalanceCheck::after_cycle(const solver::Solver& solver) {
+  const double t = solver.state().time;
+  if (!samples_.due(t) || !(solver.balance().time > 0)) return;
+  samples_.advance(t);
+  observe(solver);
+}
+
+void EnergyBalanceCheck::stop(const solver::Solver* solver, RunReport& report) {
+  if (!solver) return;
+  observe(*solver);  // the final state, whatever the sampling
+  report.energy_balance = watch_.verdict();
+  for (std::string& w : watch_.warnings()) report.warnings.push_back(std::move(w));
+}
+
+void EnergyBalanceCheck::visit_state(StateVisitor& visitor) {
+  StateGroup group(visitor, "energy_balance_check");
+  samples_.visit_state(visitor, "next_sample_time");
+  watch_.visit_state(visitor);
 }
 
 }  // namespace plyimpact::run

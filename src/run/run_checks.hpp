@@ -7,13 +7,15 @@
 //   ContactPenetrationCheck nodes a contact released while still behind the face they were in
 //                           contact with (penetrations): a line when they happen (throttled) and a
 //                           warning with the first and the deepest.
-//   EnergyRatioCheck        final energy ratio off 1 by more than 5 %.
+//   EnergyBalanceCheck      energy ratio within 1 +- 1 % and no contributor energy (contact,
+//                           interfaces) negative, at every history sample (run/energy_balance_watch).
 #pragma once
 
 #include <ostream>
 #include <vector>
 
 #include "run/contact_energy_watch.hpp"
+#include "run/energy_balance_watch.hpp"
 #include "run/hourglass_watch.hpp"
 #include "run/run_observer.hpp"
 
@@ -56,10 +58,17 @@ class ContactPenetrationCheck : public RunObserver {
   std::vector<long> reported_;  // per contact, the count last printed
 };
 
-class EnergyRatioCheck : public RunObserver {
+class EnergyBalanceCheck : public RunObserver {
  public:
-  static constexpr double kTolerance = 0.05;
+  explicit EnergyBalanceCheck(double sample_interval) : samples_(sample_interval) {}
+  void after_cycle(const solver::Solver& solver) override;
   void stop(const solver::Solver* solver, RunReport& report) override;
+  void visit_state(StateVisitor& visitor) override;
+
+ private:
+  void observe(const solver::Solver& solver);
+  Sampler samples_;
+  EnergyBalanceWatch watch_;
 };
 
 }  // namespace plyimpact::run

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "core/state_visitor.hpp"
+#include "run/energy_balance_watch.hpp"
 #include "run/hourglass_watch.hpp"
 #include "solver/solver.hpp"
 
@@ -51,6 +52,7 @@ struct RunReport {
   std::filesystem::path interfaces_pvd, cscan_vtu, cscan_png;  // empty when not written
   std::optional<DelaminationReport> delamination;               // scenes with delaminating interfaces
   std::optional<HourglassVerdict> hourglass;                    // the hourglass check (HourglassCheck)
+  std::optional<EnergyBalanceVerdict> energy_balance;           // the energy check (EnergyBalanceCheck)
 };
 
 class RunObserver {

@@ -154,6 +154,26 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     hg["passed"] = h.passed;
     j["hourglass_check"] = hg;
   }
+  if (report.energy_balance) {
+    const EnergyBalanceVerdict& b = *report.energy_balance;
+    output::Json eb = output::Json::object();
+    eb["ratio_min"] = b.ratio_min;  // energy ratio over the history samples (and the end)
+    eb["time_of_min"] = b.time_of_min;
+    eb["ratio_max"] = b.ratio_max;
+    eb["time_of_max"] = b.time_of_max;
+    eb["tolerance"] = b.tolerance;
+    output::Json negative = output::Json::array();
+    for (const NegativeEnergy& n : b.negative) {
+      output::Json entry = output::Json::object();
+      entry["energy"] = n.key;
+      entry["value"] = n.value;
+      entry["time"] = n.time;
+      negative.push_back(entry);
+    }
+    eb["negative_energies"] = negative;  // contributor energies (contact, interfaces) that went below zero
+    eb["passed"] = b.passed;
+    j["energy_balance_check"] = eb;
+  }
   j["files"] = output::Json::object();
   j["files"]["pvd"] = report.pvd.filename().string();
   j["files"]["history"] = report.history.filename().string();

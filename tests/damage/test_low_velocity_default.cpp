@@ -11,7 +11,10 @@
 //    initial - external work) stays below 1 % of the energy the tup has given up (its kinetic
 //    energy loss) - a contact shoot-apart or hourglass runaway would put the defect at the size of
 //    the transferred energy itself, while the central-difference error is O(dt^2) (measured 1e-5
-//    of the total energy in the full default run).
+//    of the total energy in the full default run);
+//  - the run's own energy check (run/energy_balance_watch) reads the same history: the ratio's
+//    extremes it reports equal those of history.csv's energy_ratio column from cycle 3 on (within
+//    the column's 10 printed digits), and it passes (the defect above is far inside its 1 %).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -96,6 +99,17 @@ TEST(LowVelocityDefault, FreeFlightFirstContactAndEnergyBalance) {
   EXPECT_GT(peak_force, 100.0);    // the contact has started loading the plate (N)
   EXPECT_GT(kinetic_loss, 0.05);   // J: the tup has given up energy to the plate
   EXPECT_LT(defect, 0.01 * kinetic_loss) << "defect " << defect << " J, transferred " << kinetic_loss << " J";
+  ASSERT_TRUE(r.energy_balance.has_value());
+  double ratio_min = 1, ratio_max = 1;  // the history rows after the start-up cycles (t > 3 steps)
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] > 3 * h["dt"][i]) {
+      ratio_min = std::min(ratio_min, h["energy_ratio"][i]);
+      ratio_max = std::max(ratio_max, h["energy_ratio"][i]);
+    }
+  EXPECT_NEAR(r.energy_balance->ratio_min, ratio_min, 1e-9);
+  EXPECT_NEAR(r.energy_balance->ratio_max, ratio_max, 1e-9);
+  EXPECT_TRUE(r.energy_balance->passed);
+  EXPECT_TRUE(r.energy_balance->negative.empty());
   std::filesystem::remove_all(dir);
 }
 
