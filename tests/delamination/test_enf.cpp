@@ -58,6 +58,12 @@ double delta_ii() {
   return 0.42 * h * std::sqrt(E11 / (11 * G13) * (3 - 2 * r * r));
 }
 
+// Beam-theory compliance (m/N) for a crack of length a from the support (see the header).
+double beam_compliance(double a) {
+  return (3 * std::pow(a + delta_ii(), 3) + 2 * L * L * L) / (8 * E11 * b * h * h * h) +
+         L / (2 * 5.0 / 6.0 * G13 * b * 2 * h);
+}
+
 struct EnfResult {
   double compliance = 0, peak = 0, wall = 0;
   long elements = 0;
@@ -110,10 +116,6 @@ TEST(ENF, ComplianceAndCriticalLoadAgainstBeamTheoryAtThreeMeshes) {
   for (double seg : {5.0, 2.5, 1.25}) {
     const EnfResult r = run_enf(seg);
     const double a_eff = a0 + seg * 1e-3 / 2;
-    const auto beam_compliance = [](double a) {
-      return (3 * std::pow(a + delta_ii(), 3) + 2 * L * L * L) / (8 * E11 * b * h * h * h) +
-             L / (2 * 5.0 / 6.0 * G13 * b * 2 * h);
-    };
     const double c_beam = beam_compliance(a_eff);
     const double tolerance = 0.02 + beam_compliance(a_eff + seg * 1e-3 / 4) / c_beam - 1;
     const double p_c = 4 * b / (3 * (a_eff + delta_ii())) * std::sqrt(E11 * h * h * h * GIIc);
