@@ -324,7 +324,7 @@ struct ContactSpec {
   double PENMAX = 0;      // m, release depth; 0 = 0.4 x element thickness across the segment
   double MAXPAR = 1.025;  // parametric tolerance of the projection
   double DTSTIF = 0;      // s, step in the SOFT 1/2 stiffness; 0 = initial solution step
-  int BSORT = 10;         // bucket sort at least every BSORT cycles
+  int BSORT = 0;          // bucket sort at least every BSORT cycles; 0: when the motion requires it
   int ENMASS = 0;         // eroding: 0 drop nodes left without elements, 1 keep them as mass points
   InitialPenetration initial_penetration = InitialPenetration::Move;
   // Tiebreak (type tiebreak_surface_to_surface): surface_a is the slave side, surface_b the master

@@ -762,7 +762,7 @@ std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
     spec.PENMAX = c.quantity_or("PENMAX", u::length, 0.0, Limits::non_negative("PENMAX"));
     spec.MAXPAR = c.quantity_or("MAXPAR", u::dimensionless, spec.MAXPAR, Limits::interval(1, false, 1.5, false, "MAXPAR"));
     spec.DTSTIF = c.quantity_or("DTSTIF", u::time, 0.0, Limits::non_negative("DTSTIF"));
-    spec.BSORT = int(c.integer_or("BSORT", spec.BSORT, Limits::interval(1, false, 1000, false, "BSORT")));
+    spec.BSORT = int(c.integer_or("BSORT", spec.BSORT, Limits::interval(0, false, 1000, false, "BSORT (cycles; 0: automatic)")));
     spec.ENMASS = c.int_choice_or("ENMASS", 0, {0, 1});
     if (const auto ip = c.find("initial_penetration"))
       spec.initial_penetration = ip->as_choice({"move", "offset"}) == "move" ? ContactSpec::InitialPenetration::Move

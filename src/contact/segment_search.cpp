@@ -77,10 +77,13 @@ void SegmentSearch::sort(const SegmentSet& set, const double* x, double step_dep
   // allowance: a node moving at the present largest speed covers BSORT dt v_max = BSORT
   // step_depth / 4 until the next sort, an eighth of this list allowance (a re-sort comes first if
   // it moves a quarter: sort_due), at least a fifth of the bucket allowance (fewer sorts by motion).
+  // Without an interval (BSORT 0) only motion triggers a sort: the whole bucket allowance.
   // They hold the segments a node can newly catch within the new-contact depth (catch_rules),
   // whose bound until the next sort is twice the present one (a re-sort comes first if the
   // motion per step grows beyond it), at least an eighth of the list allowance.
-  list_allowance_ = std::min(allowance_, std::max(0.2 * allowance_, 2.0 * double(options_.BSORT) * step_depth));
+  list_allowance_ = options_.BSORT > 0
+                        ? std::min(allowance_, std::max(0.2 * allowance_, 2.0 * double(options_.BSORT) * step_depth))
+                        : allowance_;
   new_depth_cap_ = std::max(2 * step_depth, 0.125 * list_allowance_);
   double node_box[2][6];
   querying_node_boxes(set, x, node_box);

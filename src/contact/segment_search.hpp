@@ -34,7 +34,10 @@ namespace plyimpact::contact {
 
 struct SearchOptions {
   double MAXPAR = 1.025;  // parametric tolerance of the projection
-  int BSORT = 10;         // bucket sort at least every BSORT cycles
+  // Bucket sort at least every BSORT cycles; 0 (LS-DYNA's blank: the code picks the interval):
+  // only when the motion requires it (sort_due). The lists hold every segment within reach either
+  // way, so BSORT changes what a pass costs, never what it finds.
+  int BSORT = 0;
 };
 
 // What a pass needs to know of the force nodes' motion (begin_pass).
@@ -66,7 +69,8 @@ class SegmentSearch {
   // last sort, or when the new-contact depth of this pass (4 dt v_max) exceeds the lists' cap.
   bool sort_due(const PassMotion& motion, double step_depth) const {
     const double lim2 = 0.25 * list_allowance_ * 0.25 * list_allowance_;
-    return cycles_since_sort_ >= options_.BSORT || motion.moved2 > lim2 || step_depth > new_depth_cap_;
+    const bool interval = options_.BSORT > 0 && cycles_since_sort_ >= options_.BSORT;
+    return interval || motion.moved2 > lim2 || step_depth > new_depth_cap_;
   }
   // Bucket sort at x, refresh of the records the lists may reach, candidate lists. step_depth: the
   // largest new-contact depth of the present pass, which bounds the lists' depth cap; full_depth:

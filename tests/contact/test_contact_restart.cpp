@@ -6,8 +6,7 @@
 // with SOFT 1, friction (FS, FD, DC) and viscous damping (VDC), so springs, friction forces and
 // both energies build up; an element of the lower block deleted half-way (the eroding rebuild: a
 // segment set of another size, remapped springs, exposure offsets); sorts by interval and motion.
-// Nodes move as free lumped masses under the contact forces alone (no element forces: the contact
-// is what is under test), by the central-difference update of the solver.
+// Nodes move as free lumped masses under the contact forces alone (free_nodes.hpp).
 // A control run (no state copied) must differ, so that the test cannot pass by the second contact
 // simply repeating the first from the same arrays.
 #include <gtest/gtest.h>
@@ -16,6 +15,7 @@
 #include <vector>
 
 #include "contact/penalty_contact.hpp"
+#include "free_nodes.hpp"
 #include "head_on_blocks.hpp"
 #include "state_copy.hpp"
 #include "support.hpp"
@@ -23,26 +23,8 @@
 namespace plyimpact {
 namespace {
 
-struct Kinematics {
-  std::vector<double> x, v, f;
-  std::vector<double> push;  // (num_nodes) body acceleration along z, m/s^2
-  double dt = 0;
-};
-
-// One cycle: x^{n+1} = x^n + dt v^{n+1/2}, contact forces at x^{n+1}, v^{n+3/2} = v^{n+1/2} +
-// dt (f / m + push).
-void cycle(const model::Model& model, contact::PenaltyContact& pc, Kinematics& r) {
-  for (std::size_t k = 0; k < r.x.size(); ++k) r.x[k] += r.dt * r.v[k];
-  std::fill(r.f.begin(), r.f.end(), 0.0);
-  pc.apply(r.x.data(), r.v.data(), r.f.data(), r.dt);
-  for (std::size_t n = 0; n < model.num_nodes(); ++n) {
-    for (int d = 0; d < 3; ++d) r.v[3 * n + d] += r.dt * r.f[3 * n + d] / model.mass[n];
-    r.v[3 * n + 2] += r.dt * r.push[n];
-  }
-}
-
 // Every figure a contact reports, as bytes.
-std::vector<char> figures(const contact::PenaltyContact& pc, const Kinematics& r) {
+std::vector<char> figures(const contact::PenaltyContact& pc, const test::FreeNodes& r) {
   std::vector<char> out;
   auto put = [&](const void* p, std::size_t n) {
     const char* c = static_cast<const char*>(p);
@@ -63,24 +45,9 @@ std::vector<char> figures(const contact::PenaltyContact& pc, const Kinematics& r
 
 TEST(ContactRestart, StateCopiedThroughAVisitorContinuesBitIdentically) {
   const model::Model model =
-      test::model_from_yaml(test::head_on_blocks("SOFT: 1, FS: 0.3, FD: 0.2, DC: 10, VDC: 20"), "restart.yaml");
+      test::model_from_yaml(test::head_on_blocks("SOFT: 1, FS: 0.3, FD: 0.2, DC: 10, VDC: 20, BSORT: 10"), "restart.yaml");
   const model::Contact& def = model.contacts[0];
-  Kinematics run;
-  run.x = model.X;
-  run.v.assign(model.X.size(), 0.0);
-  run.f.assign(model.X.size(), 0.0);
-  run.push.assign(model.num_nodes(), 0.0);
-  // Block b starts 0.2 mm above block a: bring it to 10 um, slide it along x at 1 m/s (friction)
-  // and push the blocks together (1e6 m/s^2 each) so that the contact forms (~200 cycles) and stays.
-  const model::ElementBlock& b = model.blocks[std::size_t(model.parts[1].block)];
-  std::vector<char> in_b(model.num_nodes(), 0);
-  for (Index n : b.conn) in_b[std::size_t(n)] = 1;
-  for (std::size_t n = 0; n < model.num_nodes(); ++n) {
-    run.push[n] = in_b[n] ? -1e8 : 1e8;
-    if (!in_b[n]) continue;
-    run.x[3 * n + 2] -= 0.199e-3;
-    run.v[3 * n] = 1.0;
-  }
+  test::FreeNodes run = test::pressed_sliding_blocks(model);
   const std::vector<double> x_start = run.x;
 
   contact::PenaltyContact first(model, def, x_start, 1e-8);
@@ -88,14 +55,8 @@ TEST(ContactRestart, StateCopiedThroughAVisitorContinuesBitIdentically) {
   const int kBefore = 450, kErode = 300, kAfter = 300;
   long active_max = 0;
   for (int c = 0; c < kBefore; ++c) {
-    if (c == kErode) {  // delete two top elements of block a under block b (6 and 7: x, y fastest)
-      const std::size_t a = std::size_t(model.parts[0].block);
-      contact::AliveMask alive(model.blocks.size());
-      alive[a].assign(model.blocks[a].size(), 1);
-      alive[a][6] = alive[a][7] = 0;
-      first.rebuild(alive, run.x);
-    }
-    cycle(model, first, run);
+    if (c == kErode) test::erode_under_block_b(model, first, run.x);
+    test::contact_cycle(model, first, run);
     active_max = std::max(active_max, long(first.forces().active));
   }
   // The scene did what it is for.
@@ -111,15 +72,15 @@ TEST(ContactRestart, StateCopiedThroughAVisitorContinuesBitIdentically) {
   ASSERT_EQ(replayer.replayed(), recorder.blocks.size());
   contact::PenaltyContact control(model, def, x_start, 1e-8);  // same arrays, no state
 
-  Kinematics second = run, third = run;
+  test::FreeNodes second = run, third = run;
   long active = 0;
   for (int c = 0; c < kAfter; ++c) {
-    cycle(model, first, run);
-    cycle(model, fresh, second);
+    test::contact_cycle(model, first, run);
+    test::contact_cycle(model, fresh, second);
     ASSERT_EQ(figures(first, run), figures(fresh, second)) << "cycle " << kBefore + c << " after the restart";
     active += long(first.forces().active);
     if (c == 0) {
-      cycle(model, control, third);
+      test::contact_cycle(model, control, third);
       EXPECT_NE(figures(first, run), figures(control, third)) << "the control run without state agrees";
     }
   }
