@@ -26,6 +26,7 @@ class FrameWriter : public RunObserver {
   void start(const solver::Solver& solver) override { write(solver); }
   void resume(const solver::Solver& solver) override;
   void after_cycle(const solver::Solver& solver) override;
+  std::string_view timing_name() const override { return "frames (VTU)"; }
   void stop(const solver::Solver* solver, RunReport& report) override;
   void visit_state(StateVisitor& visitor) override;
 

@@ -44,6 +44,7 @@ class HistoryWriter : public RunObserver {
   void start(const solver::Solver& solver) override;
   void resume(const solver::Solver& solver) override;
   void after_cycle(const solver::Solver& solver) override;
+  std::string_view timing_name() const override { return "history (CSV)"; }
   void stop(const solver::Solver* solver, RunReport& report) override;
   void visit_state(StateVisitor& visitor) override;
 

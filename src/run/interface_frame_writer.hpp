@@ -31,6 +31,7 @@ class InterfaceFrameWriter : public RunObserver {
   void start(const solver::Solver& solver) override;
   void resume(const solver::Solver& solver) override;
   void after_cycle(const solver::Solver& solver) override;
+  std::string_view timing_name() const override { return "interface frames (VTU)"; }
   void stop(const solver::Solver* solver, RunReport& report) override;
   // The frames written so far and the next frame time: a continued run keeps the series.
   void visit_state(StateVisitor& visitor) override;

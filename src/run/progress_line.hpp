@@ -20,6 +20,7 @@ class ProgressLine : public RunObserver {
   ProgressLine(std::ostream& out, bool in_place, double t_end, Clock::time_point t_start)
       : out_(out), in_place_(in_place), t_end_(t_end), t_start_(t_start) {}
   void after_cycle(const solver::Solver& solver) override;
+  std::string_view timing_name() const override { return "progress line"; }
   void stop(const solver::Solver* solver, RunReport& report) override;
 
  private:

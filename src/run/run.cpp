@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <limits>
 #include <memory>
@@ -25,18 +26,40 @@ namespace plyimpact::run {
 namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The solver's phases in the cycles (their times less those of the set-up's first force pass,
+// phases_at_start), then its bookkeeping outside them (the step, the energy sums), then each
+// observer's row; solver_seconds: wall time inside Solver::step.
+void add_cycle_rows(RunTiming& timing, const solver::Solver* solver, const std::vector<double>& phases_at_start,
+                    double solver_seconds, const std::vector<RunObserver*>& observers,
+                    const std::vector<double>& observer_seconds) {
+  double phases = 0;
+  if (solver)
+    for (std::size_t k = 0; k < solver->phase_times().size(); ++k) {
+      const auto& p = solver->phase_times()[k];
+      const double s = p.seconds - (k < phases_at_start.size() ? phases_at_start[k] : 0.0);
+      timing.add(p.name, s);
+      phases += s;
+    }
+  timing.add("solver, outside the phases", std::max(0.0, solver_seconds - phases));
+  for (std::size_t k = 0; k < observers.size(); ++k) timing.add(observers[k]->timing_name(), observer_seconds[k]);
+}
 }  // namespace
 
 RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& observers, const LoopOptions& options) {
   if (model.control.threads > 0) omp_set_num_threads(model.control.threads);
   RunReport report;
   const double t_end = model.control.termination_time;
-  double solver_seconds = 0;
+  double solver_seconds = 0, dump_seconds = 0;
+  std::vector<double> observer_seconds(observers.size(), 0.0), phases_at_start;
   long solver_cycles = 0;
   std::unique_ptr<solver::Solver> solver;
+  const auto t_loop = Clock::now();
   const auto dump = [&] {
+    const auto t0 = Clock::now();
     write_dump(options.dump_file, options.identity, *solver, observers);
     report.dump = options.dump_file;
+    dump_seconds += seconds_since(t0);
   };
   try {
     solver = std::make_unique<solver::Solver>(model);
@@ -49,6 +72,8 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
       for (RunObserver* o : observers) o->start(*solver);
     }
     // Dumps do not change the run, so their schedule is not run state: the next mark after now.
+    report.timing.add("set-up (solver, first output)", seconds_since(t_loop));
+    for (const auto& p : solver->phase_times()) phases_at_start.push_back(p.seconds);
     Sampler dumps(options.dump_interval > 0 ? options.dump_interval : std::numeric_limits<double>::infinity());
     if (dumps.due(solver->state().time)) dumps.advance(solver->state().time);
     const long max_cycles = model.control.max_cycles;
@@ -64,7 +89,11 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
       solver->step();
       solver_seconds += seconds_since(t0);
       ++solver_cycles;
-      for (RunObserver* o : observers) o->after_cycle(*solver);
+      for (std::size_t k = 0; k < observers.size(); ++k) {
+        const auto t1 = Clock::now();
+        observers[k]->after_cycle(*solver);
+        observer_seconds[k] += seconds_since(t1);
+      }
       if (!options.dump_file.empty() && dumps.due(solver->state().time)) {
         dump();
         dumps.advance(solver->state().time);
@@ -84,6 +113,9 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
     report.end_time = solver->state().time;
     report.energy_ratio = solver->energy_ratio();
   }
+  add_cycle_rows(report.timing, solver.get(), phases_at_start, solver_seconds, observers, observer_seconds);
+  if (dump_seconds > 0) report.timing.add("restart dumps", dump_seconds);
+  report.timing.span = seconds_since(t_loop);
   const double element_cycles = double(model.num_elements()) * double(solver_cycles);
   report.ns_per_element_cycle = element_cycles > 0 ? 1e9 * solver_seconds / element_cycles : 0.0;
   for (RunObserver* o : observers) o->stop(solver.get(), report);

@@ -19,6 +19,7 @@
 #include "core/state_visitor.hpp"
 #include "run/energy_balance_watch.hpp"
 #include "run/hourglass_watch.hpp"
+#include "run/run_timing.hpp"
 #include "solver/solver.hpp"
 
 namespace plyimpact::run {
@@ -53,6 +54,7 @@ struct RunReport {
   std::optional<DelaminationReport> delamination;               // scenes with delaminating interfaces
   std::optional<HourglassVerdict> hourglass;                    // the hourglass check (HourglassCheck)
   std::optional<EnergyBalanceVerdict> energy_balance;           // the energy check (EnergyBalanceCheck)
+  RunTiming timing;                                             // where the wall time went (run_timing.hpp)
 };
 
 class RunObserver {
@@ -64,6 +66,8 @@ class RunObserver {
   // The observer's share of the run state (nothing for a stateless observer).
   virtual void visit_state(StateVisitor& visitor) { (void)visitor; }
   virtual void after_cycle(const solver::Solver& solver) { (void)solver; }
+  // Its row in the run's timing (observers of one name share a row).
+  virtual std::string_view timing_name() const { return "run checks"; }
   // In the order the observers were registered: a later one sees the warnings of earlier ones.
   virtual void stop(const solver::Solver* solver, RunReport& report) {
     (void)solver;

@@ -61,6 +61,24 @@ output::Json mass_scaling_json(const model::Model& model) {
   return j;
 }
 
+// Where the wall time went (run_timing.hpp): rows in the order they were measured.
+output::Json timing_json(const RunTiming& t) {
+  output::Json j = output::Json::object();
+  j["units"] = "s (wall); share: of span, the set-up and the cycles up to the stop";
+  j["span"] = t.span;
+  j["accounted"] = t.accounted();
+  output::Json rows = output::Json::array();
+  for (const TimingRow& r : t.rows()) {
+    output::Json e = output::Json::object();
+    e["name"] = r.name;
+    e["seconds"] = r.seconds;
+    e["share"] = t.span > 0 ? r.seconds / t.span : 0.0;
+    rows.push_back(e);
+  }
+  j["rows"] = rows;
+  return j;
+}
+
 }  // namespace
 
 void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
@@ -79,6 +97,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
   j["elements"] = std::uint64_t(model.num_elements());
   j["threads"] = solver ? solver->threads_used() : omp_get_max_threads();
   j["ns_per_element_cycle"] = report.ns_per_element_cycle;
+  j["timing"] = timing_json(report.timing);
   output::Json subs = output::Json::object();
   for (const auto& s : solver::subsystems(model)) {
     output::Json entry = output::Json::object();
