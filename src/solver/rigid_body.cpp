@@ -115,8 +115,11 @@ double RigidBodies::step(const double* f, double* x, double* v, double dt_n, dou
     // Update the body and its nodes.
     const M3 R_new = rotation(w_new, dt_half) * R;
     const V3 xc_new = xc + dt_half * v_new;
-    for (std::size_t k = 0; k < body.nodes.size(); ++k) {
-      const std::size_t n = std::size_t(body.nodes[k]);
+    // Each node depends on the body alone, so threads may share them (same values, any count).
+    const long N = long(body.nodes.size());
+#pragma omp parallel for schedule(static) if (parallel_ && N >= kParallelMinNodes)
+    for (long k = 0; k < N; ++k) {
+      const std::size_t n = std::size_t(body.nodes[std::size_t(k)]);
       const V3 xn = xc_new + R_new * V3(r0[3 * k], r0[3 * k + 1], r0[3 * k + 2]);
       for (int d = 0; d < 3; ++d) {
         const double x_old = x[3 * n + d] - dt_half * v[3 * n + d];

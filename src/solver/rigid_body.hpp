@@ -39,6 +39,11 @@ class RigidBodies {
   double step(const double* f, double* x, double* v, double dt_n, double dt_half, bool first,
               const std::vector<double>& curve_value, double& work);
 
+  // Nodes of a body with at least kParallelMinNodes are placed by all threads when on (the
+  // solver's choice for the model). The resultant stays serial: its sums keep their order.
+  static constexpr long kParallelMinNodes = 1024;
+  void set_parallel(bool on) { parallel_ = on; }
+
   const std::vector<RigidBodyState>& states() const { return states_; }
   std::vector<RigidBodyState>& states() { return states_; }
   double kinetic_energy() const;  // at the current half step (for the initial balance)
@@ -48,6 +53,7 @@ class RigidBodies {
   const model::Model& model_;
   std::vector<RigidBodyState> states_;
   std::vector<std::vector<double>> r0_;  // per body: (num_nodes, 3) reference offsets from x_cm
+  bool parallel_ = false;
 };
 
 }  // namespace plyimpact::solver

@@ -86,6 +86,7 @@ Solver::Solver(const model::Model& model) : model_(model) {
   inverse_mass_.resize(n);
   for (std::size_t i = 0; i < n; ++i) inverse_mass_[i] = node_mass_[i] > 0 ? 1.0 / node_mass_[i] : 0.0;
   parallel_ = model.num_elements() >= kParallelMinElements;
+  if (rigid_) rigid_->set_parallel(parallel_);
   build_chunk_dependencies();
   alive_.resize(model.blocks.size());
   chunk_ranges_.resize(model.schedule.chunks.size());
