@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "app/application.hpp"
+#include "solver/rigid_body.hpp"
 #include "support.hpp"
 
 namespace plyimpact {
@@ -50,6 +51,41 @@ TEST(Threads, OneAndTwoThreadsAreBitIdentical) {
   EXPECT_EQ(a.internal_energy, b.internal_energy);
   EXPECT_EQ(a.hourglass_energy, b.hourglass_energy);
   EXPECT_EQ(a.dt_next_half, b.dt_next_half);
+}
+
+// A spinning rigid body of 2,197 nodes (above RigidBodies::kParallelMinNodes, so two threads share
+// the placement of its nodes) beside a deformable block that makes the model parallel: its nodes'
+// positions and velocities, and its state, are bit-identical on one and two threads. The spin
+// (omega_y from opposite x velocities of the top and bottom faces) turns the body in every cycle.
+TEST(Threads, ManyNodeRigidBodyIsPlacedBitIdentically) {
+  const model::Model model = test::model_from_yaml(
+      "units: SI\ncontrol: {termination_time: 1}\nmaterials:\n"
+      "  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+      "  rig: {card: MAT_020, RO: 7850, E: 210e9, PR: 0.3}\n"
+      "sections:\n  s: {ELFORM: 1}\nparts:\n  body: {material: rig, section: s}\n  plate: {material: steel, section: s}\n"
+      "mesh:\n  merge_nodes: false\n  boxes:\n"
+      "    - {part: body, size: [0.012, 0.012, 0.012], elements: [12, 12, 12]}\n"
+      "    - {part: plate, origin: [0.1, 0, 0], size: [0.032, 0.032, 0.002], elements: [32, 32, 2]}\n"
+      "node_sets:\n  top: {plane: {axis: z, value: 0.012}}\n  bottom: {plane: {axis: z, value: 0}}\n"
+      "initial_velocity:\n  - {node_set: top, velocity: [20, 0, 0]}\n  - {node_set: bottom, velocity: [-20, 0, 0]}\n",
+      "rigid_threads.yaml");
+  ASSERT_EQ(model.rigid_bodies.size(), 1u);
+  ASSERT_GE(long(model.rigid_bodies[0].nodes.size()), solver::RigidBodies::kParallelMinNodes);
+  ASSERT_GE(model.num_elements(), 1024u + 1728u);
+  omp_set_num_threads(1);
+  solver::Solver one(model);
+  omp_set_num_threads(2);
+  solver::Solver two(model);
+  for (int i = 0; i < 30; ++i) {
+    omp_set_num_threads(1);
+    one.step();
+    omp_set_num_threads(2);
+    two.step();
+  }
+  ASSERT_GT(std::abs(one.rigid_bodies()[0].omega[1]), 0.0) << "the body does not spin";
+  EXPECT_EQ(0, std::memcmp(one.state().x.data(), two.state().x.data(), one.state().x.size() * sizeof(double)));
+  EXPECT_EQ(0, std::memcmp(one.state().v.data(), two.state().v.data(), one.state().v.size() * sizeof(double)));
+  EXPECT_EQ(0, std::memcmp(&one.rigid_bodies()[0], &two.rigid_bodies()[0], sizeof(solver::RigidBodyState)));
 }
 
 // A rigid steel block (*MAT_020, a rigid body) strikes a *MAT_054 plate (strains to erosion set
