@@ -17,6 +17,28 @@ struct FreeNodes {
   double dt = 0;
 };
 
+// Every figure a contact reports after a cycle, as bytes: the nodal forces, energies and stable
+// step, resultant and force sums, active springs, exposure offsets, segment count and the contact's
+// own node forces; with_sorts adds its sort count (which only the sort interval changes).
+inline std::vector<char> contact_figures(const contact::PenaltyContact& pc, const FreeNodes& r, bool with_sorts) {
+  std::vector<char> out;
+  auto put = [&](const void* p, std::size_t n) {
+    const char* c = static_cast<const char*>(p);
+    out.insert(out.end(), c, c + n);
+  };
+  put(r.f.data(), r.f.size() * sizeof(double));
+  const double e[3] = {pc.energy(), pc.friction_energy(), pc.spring_stable_step()};
+  put(e, sizeof e);
+  const contact::ContactForces& cf = pc.forces();
+  put(cf.resultant.data(), sizeof(double) * 3);
+  const double cfs[3] = {cf.normal, cf.tangential, cf.potential};
+  put(cfs, sizeof cfs);
+  const long counts[4] = {long(cf.active), with_sorts ? pc.sorts() : 0L, pc.exposed_offsets(), long(pc.num_segments())};
+  put(counts, sizeof counts);
+  put(pc.node_forces().data(), pc.node_forces().size() * sizeof(double));
+  return out;
+}
+
 // One cycle: x^{n+1} = x^n + dt v^{n+1/2}, contact forces at x^{n+1}, v^{n+3/2} = v^{n+1/2} +
 // dt (f / m + push).
 inline void contact_cycle(const model::Model& model, contact::PenaltyContact& pc, FreeNodes& r) {

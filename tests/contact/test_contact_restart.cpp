@@ -23,26 +23,6 @@
 namespace plyimpact {
 namespace {
 
-// Every figure a contact reports, as bytes.
-std::vector<char> figures(const contact::PenaltyContact& pc, const test::FreeNodes& r) {
-  std::vector<char> out;
-  auto put = [&](const void* p, std::size_t n) {
-    const char* c = static_cast<const char*>(p);
-    out.insert(out.end(), c, c + n);
-  };
-  put(r.f.data(), r.f.size() * sizeof(double));
-  const double e[3] = {pc.energy(), pc.friction_energy(), pc.spring_stable_step()};
-  put(e, sizeof e);
-  const contact::ContactForces& cf = pc.forces();
-  put(cf.resultant.data(), sizeof(double) * 3);
-  const double cfs[3] = {cf.normal, cf.tangential, cf.potential};
-  put(cfs, sizeof cfs);
-  const long counts[4] = {long(cf.active), pc.sorts(), pc.exposed_offsets(), long(pc.num_segments())};
-  put(counts, sizeof counts);
-  put(pc.node_forces().data(), pc.node_forces().size() * sizeof(double));
-  return out;
-}
-
 TEST(ContactRestart, StateCopiedThroughAVisitorContinuesBitIdentically) {
   const model::Model model =
       test::model_from_yaml(test::head_on_blocks("SOFT: 1, FS: 0.3, FD: 0.2, DC: 10, VDC: 20, BSORT: 10"), "restart.yaml");
@@ -77,11 +57,13 @@ TEST(ContactRestart, StateCopiedThroughAVisitorContinuesBitIdentically) {
   for (int c = 0; c < kAfter; ++c) {
     test::contact_cycle(model, first, run);
     test::contact_cycle(model, fresh, second);
-    ASSERT_EQ(figures(first, run), figures(fresh, second)) << "cycle " << kBefore + c << " after the restart";
+    ASSERT_EQ(test::contact_figures(first, run, true), test::contact_figures(fresh, second, true))
+        << "cycle " << kBefore + c << " after the restart";
     active += long(first.forces().active);
     if (c == 0) {
       test::contact_cycle(model, control, third);
-      EXPECT_NE(figures(first, run), figures(control, third)) << "the control run without state agrees";
+      EXPECT_NE(test::contact_figures(first, run, true), test::contact_figures(control, third, true))
+          << "the control run without state agrees";
     }
   }
   EXPECT_GT(active, 0) << "no spring active after the restart";

@@ -2,8 +2,8 @@
 // node all segments it can reach before the next sort (SegmentSearch), so a contact sorted every
 // cycle (BSORT 1), every 10 cycles, or only when the motion requires it (BSORT 0, the default)
 // finds the same springs and gives the same forces. Reference: the run sorted every cycle, which
-// searches from fresh lists at each pass. The comparison is exact (bytes of the nodal forces,
-// energies, resultant and active springs, every cycle): the candidate lists differ in length only,
+// searches from fresh lists at each pass. The comparison is exact (bytes of every figure the
+// contact reports but its sort count, every cycle): the candidate lists differ in length only,
 // and the nearest-segment choice does not depend on how many far segments a list holds.
 // Scene: head_on_blocks pressed together while sliding (friction, viscous damping), with an
 // eroding rebuild half-way (free_nodes.hpp), as in the restart test.
@@ -27,23 +27,6 @@ struct SortedRun {
   long active_max = 0;
 };
 
-std::vector<char> figures(const contact::PenaltyContact& pc, const test::FreeNodes& r) {
-  std::vector<char> out;
-  auto put = [&](const void* p, std::size_t n) {
-    const char* c = static_cast<const char*>(p);
-    out.insert(out.end(), c, c + n);
-  };
-  put(r.f.data(), r.f.size() * sizeof(double));
-  const contact::ContactForces& cf = pc.forces();
-  const double e[6] = {pc.energy(), pc.friction_energy(), cf.normal, cf.tangential, cf.potential,
-                       pc.spring_stable_step()};
-  put(e, sizeof e);
-  put(cf.resultant.data(), sizeof(double) * 3);
-  const long active = long(cf.active);
-  put(&active, sizeof active);
-  return out;
-}
-
 SortedRun run_with(const std::string& bsort) {
   const model::Model model = test::model_from_yaml(
       test::head_on_blocks("SOFT: 1, FS: 0.3, FD: 0.2, DC: 10, VDC: 20, BSORT: " + bsort), "sort_interval.yaml");
@@ -54,7 +37,7 @@ SortedRun run_with(const std::string& bsort) {
   for (int c = 0; c < 750; ++c) {
     if (c == 300) test::erode_under_block_b(model, pc, r.x);
     test::contact_cycle(model, pc, r);
-    out.figures.push_back(figures(pc, r));
+    out.figures.push_back(test::contact_figures(pc, r, /*with_sorts=*/false));
     out.active_max = std::max(out.active_max, long(pc.forces().active));
   }
   out.sorts = pc.sorts();
