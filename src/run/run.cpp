@@ -71,9 +71,9 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
     } else {
       for (RunObserver* o : observers) o->start(*solver);
     }
-    // Dumps do not change the run, so their schedule is not run state: the next mark after now.
     report.timing.add("set-up (solver, first output)", seconds_since(t_loop));
     for (const auto& p : solver->phase_times()) phases_at_start.push_back(p.seconds);
+    // Dumps do not change the run, so their schedule is not run state: the next mark after now.
     Sampler dumps(options.dump_interval > 0 ? options.dump_interval : std::numeric_limits<double>::infinity());
     if (dumps.due(solver->state().time)) dumps.advance(solver->state().time);
     const long max_cycles = model.control.max_cycles;
