@@ -9,9 +9,6 @@
 namespace plyimpact::cohesive {
 namespace {
 
-// Pairs per chunk of the energy sums: fixed, so the sums do not depend on the thread count.
-constexpr std::size_t kChunk = 1024;
-
 inline void cross(const double a[3], const double b[3], double c[3]) {
   c[0] = a[1] * b[2] - a[2] * b[1];
   c[1] = a[2] * b[0] - a[0] * b[2];
@@ -62,27 +59,33 @@ void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
   }
 }
 
-[[gnu::always_inline]] inline TiebreakPairs::Frame TiebreakPairs::frame(std::size_t p) const {
-  Frame fr;
-  for (int i = 0; i < 3; ++i) fr.n[i] = normals_[3 * p + i];
-  const double* t = pairs_[p].t1_ref;
-  const double tn = dot(t, fr.n);
-  for (int i = 0; i < 3; ++i) fr.t1[i] = t[i] - tn * fr.n[i];
-  const double len_sq = dot(fr.t1, fr.t1);
-  const double inv_len = len_sq > 0 ? 1 / std::sqrt(len_sq) : 0.0;
-  for (int i = 0; i < 3; ++i) fr.t1[i] *= inv_len;
-  cross(fr.n, fr.t1, fr.t2);
-  return fr;
-}
-
-[[gnu::always_inline]] inline void TiebreakPairs::local_opening(const double* x, std::size_t p, const Frame& fr,
-                                                                double u[3]) const {
-  const auto& c = pairs_[p];
-  double d[3];
-  for (int i = 0; i < 3; ++i) d[i] = x[3 * c.upper + i] - x[3 * c.lower + i] - c.g0[i];
-  u[0] = dot(d, fr.n);
-  u[1] = dot(d, fr.t1);
-  u[2] = dot(d, fr.t2);
+// The frame: n, then t_1 = the reference tangent projected on the plane normal to n (zero if it
+// is parallel to n), t_2 = n x t_1; the opening d = x_upper - x_lower - g_0 resolved in it. The
+// operations are those of dot and cross above, in their order.
+void TiebreakPairs::frames_and_openings(const double* __restrict normals, const PairConst* __restrict pairs,
+                                        const double* __restrict x, std::size_t begin, std::size_t m,
+                                        double (*__restrict out)[kChunk]) {
+#pragma omp simd
+  for (std::size_t j = 0; j < m; ++j) {
+    const std::size_t p = begin + j;
+    const PairConst& c = pairs[p];
+    const double n0 = normals[3 * p], n1 = normals[3 * p + 1], n2 = normals[3 * p + 2];
+    const double* t = c.t1_ref;
+    const double tn = t[0] * n0 + t[1] * n1 + t[2] * n2;
+    double a0 = t[0] - tn * n0, a1 = t[1] - tn * n1, a2 = t[2] - tn * n2;
+    const double len_sq = a0 * a0 + a1 * a1 + a2 * a2;
+    const double inv_len = len_sq > 0 ? 1 / std::sqrt(len_sq) : 0.0;
+    a0 *= inv_len, a1 *= inv_len, a2 *= inv_len;
+    const double b0 = n1 * a2 - n2 * a1, b1 = n2 * a0 - n0 * a2, b2 = n0 * a1 - n1 * a0;
+    const std::size_t up = 3 * std::size_t(c.upper), lo = 3 * std::size_t(c.lower);
+    const double d0 = x[up] - x[lo] - c.g0[0], d1 = x[up + 1] - x[lo + 1] - c.g0[1], d2 = x[up + 2] - x[lo + 2] - c.g0[2];
+    out[0][j] = n0, out[1][j] = n1, out[2][j] = n2;
+    out[3][j] = a0, out[4][j] = a1, out[5][j] = a2;
+    out[6][j] = b0, out[7][j] = b1, out[8][j] = b2;
+    out[9][j] = d0 * n0 + d1 * n1 + d2 * n2;
+    out[10][j] = d0 * a0 + d1 * a1 + d2 * a2;
+    out[11][j] = d0 * b0 + d1 * b1 + d2 * b2;
+  }
 }
 
 // A separated pair is contact between two faces only while its nodes lie over each other. It is
@@ -248,11 +251,12 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
 #pragma omp for schedule(static)
     for (std::size_t ch = 0; ch < chunks; ++ch) {
       double elastic = 0, dissipated = 0, separated = 0;
-      const std::size_t end = std::min(n, (ch + 1) * kChunk);
-      for (std::size_t p = ch * kChunk; p < end; ++p) {
-        const Frame fr = frame(p);
-        double u[3];
-        local_opening(x, p, fr, u);
+      const std::size_t begin = ch * kChunk, end = std::min(n, begin + kChunk);
+      alignas(64) double fo[12][kChunk];
+      frames_and_openings(normals_.data(), pairs_.data(), x, begin, end - begin, fo);
+      for (std::size_t p = begin; p < end; ++p) {
+        const std::size_t j = p - begin;
+        double u[3] = {fo[9][j], fo[10][j], fo[11][j]};
         PointHistory h = history_.load(p);
         // A pair let go by the rules above drops the penalty energy of its compression at once;
         // like an eroded element's energy it stays in the balance, booked as dissipated (the
@@ -268,7 +272,7 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
         const auto& c = pairs_[p];
         const double* t = r.traction;
         for (int i = 0; i < 3; ++i) {
-          const double force = c.area * (t[0] * fr.n[i] + t[1] * fr.t1[i] + t[2] * fr.t2[i]);
+          const double force = c.area * (t[0] * fo[i][j] + t[1] * fo[3 + i][j] + t[2] * fo[6 + i][j]);
           f[3 * c.lower + i] += force;
           f[3 * c.upper + i] -= force;
         }
@@ -301,13 +305,18 @@ void TiebreakPairs::set_nodal_mass(const double* nodal_mass) {
 }
 
 void TiebreakPairs::sample(const double* x, PairSample* out) const {
-  for (std::size_t p = 0; p < pairs_.size(); ++p) {
-    const Frame fr = frame(p);
-    PairSample& s = out[p];
-    local_opening(x, p, fr, s.opening);
-    const PointHistory h = history_.load(p);
-    open_beyond_reach(h, pairs_[p].area, release_depth_, released_[p] != 0, s.opening);
-    sample_point(law_, h, s);
+  const std::size_t n = pairs_.size();
+  for (std::size_t begin = 0; begin < n; begin += kChunk) {
+    const std::size_t end = std::min(n, begin + kChunk);
+    alignas(64) double fo[12][kChunk];
+    frames_and_openings(normals_.data(), pairs_.data(), x, begin, end - begin, fo);
+    for (std::size_t p = begin; p < end; ++p) {
+      PairSample& s = out[p];
+      for (int i = 0; i < 3; ++i) s.opening[i] = fo[9 + i][p - begin];
+      const PointHistory h = history_.load(p);
+      open_beyond_reach(h, pairs_[p].area, release_depth_, released_[p] != 0, s.opening);
+      sample_point(law_, h, s);
+    }
   }
 }
 

@@ -104,14 +104,18 @@ class TiebreakPairs {
     double g0[3]{};      // m, reference offset upper - lower
     double t1_ref[3]{};  // reference tangent (unit)
   };
-  struct Frame {
-    double n[3], t1[3], t2[3];
-  };
+  // Pairs per block of frames and openings, and per chunk of the energy sums (fixed, so that the
+  // sums do not depend on the thread count).
+  static constexpr std::size_t kChunk = 1024;
+  // Frames and openings of pairs [begin, begin + m), m <= kChunk, lane-major: out[0..2][j] = n,
+  // out[3..5][j] = t_1, out[6..8][j] = t_2, out[9..11][j] = the opening in that frame (m). One loop
+  // without branches on the history, which GCC vectorises (gathers of the node positions).
+  static void frames_and_openings(const double* __restrict normals, const PairConst* __restrict pairs,
+                                  const double* __restrict x, std::size_t begin, std::size_t m,
+                                  double (*__restrict out)[kChunk]);
 
   void compute_face_vectors(const double* x, std::size_t begin, std::size_t end);
   void normals_from_faces(std::size_t begin, std::size_t end);
-  Frame frame(std::size_t p) const;
-  void local_opening(const double* x, std::size_t p, const Frame& fr, double u[3]) const;
   void build_face_adjacency(const double* x_ref, bool areas_from_faces);
 
   TractionLaw law_;
