@@ -241,7 +241,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
       if (o->s < 0) {
         Penetrations& p = penetrations_;
         p.released_potential += o->potential;
-        const PenetrationEvent e{set_.node_id(o->i), time, o->depth};
+        const PenetrationEvent e{time, o->depth, set_.node_id(o->i)};
         if (p.count == 0) p.first = e;
         if (e.depth > p.deepest.depth) p.deepest = e;
         p.last = e;

@@ -31,6 +31,8 @@
 // Allocation-free per cycle (buffers sized at construction or rebuild).
 #pragma once
 
+#include <cstdint>
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -57,9 +59,10 @@ struct InitialPenetrations {
 // segment (deeper than the release depth, or pushed through), as LS-DYNA reports the penetrations
 // it releases.
 struct PenetrationEvent {
-  Index node = -1;     // model node index (0-based)
   double time = 0;     // s, of the pass that released it
   double depth = 0;    // m, behind the face at release
+  Index node = -1;     // model node index (0-based)
+  std::int32_t unused = 0;  // the padding made a member: a restart dump holds defined bytes only
 };
 struct Penetrations {
   long count = 0;
