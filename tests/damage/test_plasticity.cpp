@@ -141,7 +141,9 @@ TEST(Mat024, StressFollowsTheHardeningCurve) {
     const double straddle = now != branch ? E * 1e-5 : 0.0;  // the increment crossing a kink
     branch = now;
     ASSERT_NEAR(pt.stress[0], want, 1e-6 * want + straddle) << "eps = " << total;
-    if (r.plastic_increment > 0) ASSERT_NEAR(pt.history[0], total - want / E, 1e-6 * total + 1e-5) << "eps = " << total;
+    if (r.plastic_increment > 0) {
+      ASSERT_NEAR(pt.history[0], total - want / E, 1e-6 * total + 1e-5) << "eps = " << total;
+    }
     failed = r.failed;
   }
   EXPECT_TRUE(failed);                                // FAIL = 0.15 reached

@@ -75,7 +75,9 @@ TEST(EnergyPath, BookedEnergyIsTheWorkOfTheTractionsWhileTheMixityTurns) {
       const double mismatch = (b.booked - b.work) / b.work;
       std::printf("%-20s N %6d: work %.6g J/m^2, booked %.6g J/m^2, (booked - work) / work %+.3e\n", c.name, steps,
                   b.work, b.booked, mismatch);
-      if (last != 0) EXPECT_LT(std::abs(mismatch), 0.1 * std::abs(last)) << c.name << ", N " << steps;
+      if (last != 0) {
+        EXPECT_LT(std::abs(mismatch), 0.1 * std::abs(last)) << c.name << ", N " << steps;
+      }
       last = mismatch;
     }
     EXPECT_LT(std::abs(last), 1e-6) << c.name;

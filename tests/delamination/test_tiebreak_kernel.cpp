@@ -161,7 +161,9 @@ TEST(TiebreakKernel, SeparatedPairCarriesContactOnlyWithinReachAndReleaseDepth) 
     const double held = pairs.elastic_energy(), dissipated = pairs.dissipated_energy();
     pairs.apply(x, v, f, 1e-9);
     // Let go, the penalty energy it held stays in the balance as dissipated (no friction here).
-    if (!c.carries) EXPECT_NEAR(pairs.dissipated_energy() - dissipated, held, 1e-9 * held + 1e-30);
+    if (!c.carries) {
+      EXPECT_NEAR(pairs.dissipated_energy() - dissipated, held, 1e-9 * held + 1e-30);
+    }
     const double expected = c.carries ? kn * area * c.depth : 0.0;  // N, pushing the upper node up
     EXPECT_NEAR(f[5], expected, 1e-9 * kn * area * c.depth) << "slide " << c.slide << " m, depth " << c.depth << " m";
     EXPECT_NEAR(pairs.elastic_energy(), c.carries ? 0.5 * kn * area * c.depth * c.depth : 0.0,

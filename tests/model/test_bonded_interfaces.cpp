@@ -66,8 +66,9 @@ TEST(BondedInterfaces, MergedLaminateIsTheLaminateMeshedWithoutInterfaces) {
     EXPECT_NEAR(bonded.mass[it->second], plain.mass[n], 1e-12 * plain.mass[n]);
   }
   for (std::size_t n = 0; n < bonded.num_nodes(); ++n)
-    if (nb.find(key_of(bonded, Index(n))) == nb.end() || nb.at(key_of(bonded, Index(n))) != Index(n))
+    if (nb.find(key_of(bonded, Index(n))) == nb.end() || nb.at(key_of(bonded, Index(n))) != Index(n)) {
       EXPECT_EQ(bonded.mass[n], 0.0) << "an unused duplicate carries mass";
+    }
   // Same elements, in the same order, over the same positions.
   ASSERT_EQ(bonded.blocks.size(), plain.blocks.size());
   for (std::size_t b = 0; b < plain.blocks.size(); ++b) {
