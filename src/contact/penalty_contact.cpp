@@ -229,8 +229,12 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   for (long c = 0; c < chunks; ++c) {
     const std::size_t begin = std::size_t(c) * kNodeChunk, end = std::min(N, begin + kNodeChunk);
     std::size_t count = 0;
-    for (std::size_t i = begin; i < end; ++i)
+    for (std::size_t i = begin; i < end; ++i) {
+      // Most of a surface has nothing within reach and no spring (catch_segment would find no
+      // segment, and the node stays out of contact): skipped before the node's speed and the call.
+      if (!springs_.engaged[i] && springs_.segment[i] < 0 && search_.candidates(i).empty()) continue;
       if (evaluate_node(i, x, v, dt, v_max, friction, outcomes_[begin + count])) ++count;
+    }
     outcome_count_[std::size_t(c)] = count;
   }
   // In node order, as one thread would: forces on the force nodes, stability rows, sums, records.
