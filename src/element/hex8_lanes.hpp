@@ -217,19 +217,27 @@ PLYIMPACT_LANE_KERNEL void hex8_cube_root_volume_lanes(const LaneVec<9>& Jx, con
 template <bool kProject>
 PLYIMPACT_LANE_KERNEL void hex8_hourglass_lanes(const LaneNodeVec& xe, const LaneNodeVec& ve, const LaneNodeVec& b,
                                  double (&gamma)[4][8][kLanes], double (&g)[3][4][kLanes]) {
-  for (int a = 0; a < 4; ++a) {
-    alignas(64) double h[3][kLanes] = {};
-    if constexpr (kProject) {
-      for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 8; ++k) PLYIMPACT_LANES h[i][l] += kGamma[a][k] * xe[i][k][l];
+  // One lane loop per mode with the sums in registers (the same operations in the same order as
+  // the three sums written out separately: h, then gamma node by node, then g).
+  for (int a = 0; a < 4; ++a)
+    PLYIMPACT_LANES {
+      double h0 = 0, h1 = 0, h2 = 0;
+      if constexpr (kProject)
+        for (int k = 0; k < 8; ++k) {
+          h0 += kGamma[a][k] * xe[0][k][l];
+          h1 += kGamma[a][k] * xe[1][k][l];
+          h2 += kGamma[a][k] * xe[2][k][l];
+        }
+      double g0 = 0, g1 = 0, g2 = 0;
+      for (int k = 0; k < 8; ++k) {
+        const double gak = kGamma[a][k] - (h0 * b[0][k][l] + h1 * b[1][k][l] + h2 * b[2][k][l]);
+        gamma[a][k][l] = gak;
+        g0 += ve[0][k][l] * gak;
+        g1 += ve[1][k][l] * gak;
+        g2 += ve[2][k][l] * gak;
+      }
+      g[0][a][l] = g0, g[1][a][l] = g1, g[2][a][l] = g2;
     }
-    for (int k = 0; k < 8; ++k)
-      PLYIMPACT_LANES gamma[a][k][l] = kGamma[a][k] - (h[0][l] * b[0][k][l] + h[1][l] * b[1][k][l] + h[2][l] * b[2][k][l]);
-    for (int i = 0; i < 3; ++i) {
-      PLYIMPACT_LANES g[i][a][l] = 0;
-      for (int k = 0; k < 8; ++k) PLYIMPACT_LANES g[i][a][l] += ve[i][k][l] * gamma[a][k][l];
-    }
-  }
 }
 
 }  // namespace plyimpact::element
