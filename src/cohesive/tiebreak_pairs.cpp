@@ -29,17 +29,26 @@ void perpendicular(const double n[3], double t[3]) {
 
 }  // namespace
 
-// Vector areas 1/2 (d_02 x d_13) of faces [begin, end) on the current mid-surface.
-void TiebreakPairs::compute_face_vectors(const double* x, std::size_t begin, std::size_t end) {
+// Mid-surface points of pairs [begin, end), the corners of the faces (computed once per pair, not
+// once per face corner: a pair is the corner of up to four faces).
+void TiebreakPairs::compute_midpoints(const double* x, std::size_t begin, std::size_t end) {
+  for (std::size_t p = begin; p < end; ++p) {
+    const auto& c = pairs_[p];
+    for (int i = 0; i < 3; ++i) midpoints_[3 * p + i] = 0.5 * (x[3 * c.lower + i] + x[3 * c.upper + i]);
+  }
+}
+
+// Vector areas 1/2 (d_02 x d_13) of faces [begin, end) on the mid-surface of the last
+// compute_midpoints.
+void TiebreakPairs::compute_face_vectors(std::size_t begin, std::size_t end) {
   for (std::size_t f = begin; f < end; ++f) {
     const Index* q = &faces_[4 * f];
-    double m[4][3];
-    for (int k = 0; k < 4; ++k) {
-      const auto& c = pairs_[q[k]];
-      for (int i = 0; i < 3; ++i) m[k][i] = 0.5 * (x[3 * c.lower + i] + x[3 * c.upper + i]);
-    }
-    const double d1[3] = {m[2][0] - m[0][0], m[2][1] - m[0][1], m[2][2] - m[0][2]};
-    const double d2[3] = {m[3][0] - m[1][0], m[3][1] - m[1][1], m[3][2] - m[1][2]};
+    const double* m0 = &midpoints_[3 * std::size_t(q[0])];
+    const double* m1 = &midpoints_[3 * std::size_t(q[1])];
+    const double* m2 = &midpoints_[3 * std::size_t(q[2])];
+    const double* m3 = &midpoints_[3 * std::size_t(q[3])];
+    const double d1[3] = {m2[0] - m0[0], m2[1] - m0[1], m2[2] - m0[2]};
+    const double d2[3] = {m3[0] - m1[0], m3[1] - m1[1], m3[2] - m1[2]};
     double* a = &face_vector_[3 * f];
     cross(d1, d2, a);
     for (int i = 0; i < 3; ++i) a[i] *= 0.5;
@@ -203,7 +212,9 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
 void TiebreakPairs::build_face_adjacency(const double* x_ref, bool areas_from_faces) {
   const std::size_t n = pairs_.size(), nf = faces_.size() / 4;
   face_vector_.assign(3 * nf, 0.0);
-  compute_face_vectors(x_ref, 0, nf);
+  midpoints_.assign(3 * n, 0.0);
+  compute_midpoints(x_ref, 0, n);
+  compute_face_vectors(0, nf);
   std::vector<Index> count(n + 1, 0);
   for (std::size_t f = 0; f < nf; ++f) {
     const Index* q = &faces_[4 * f];
@@ -244,7 +255,9 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
   {
     if (refresh) {
 #pragma omp for schedule(static)
-      for (std::size_t b = 0; b < nf; b += kChunk) compute_face_vectors(x, b, std::min(nf, b + kChunk));
+      for (std::size_t b = 0; b < n; b += kChunk) compute_midpoints(x, b, std::min(n, b + kChunk));
+#pragma omp for schedule(static)
+      for (std::size_t b = 0; b < nf; b += kChunk) compute_face_vectors(b, std::min(nf, b + kChunk));
 #pragma omp for schedule(static)
       for (std::size_t b = 0; b < n; b += kChunk) normals_from_faces(b, std::min(n, b + kChunk));
     }

@@ -114,7 +114,8 @@ class TiebreakPairs {
                                   const double* __restrict x, std::size_t begin, std::size_t m,
                                   double (*__restrict out)[kChunk]);
 
-  void compute_face_vectors(const double* x, std::size_t begin, std::size_t end);
+  void compute_midpoints(const double* x, std::size_t begin, std::size_t end);
+  void compute_face_vectors(std::size_t begin, std::size_t end);
   void normals_from_faces(std::size_t begin, std::size_t end);
   void build_face_adjacency(const double* x_ref, bool areas_from_faces);
 
@@ -124,6 +125,7 @@ class TiebreakPairs {
   std::vector<Index> faces_;               // (num_faces, 4)
   std::vector<Index> pair_face_offset_;    // (num_pairs + 1) CSR of the faces around each pair
   std::vector<Index> pair_face_;
+  std::vector<double> midpoints_;          // (num_pairs, 3) mid-surface points of the last refresh (scratch)
   std::vector<double> face_vector_;        // (num_faces, 3) vector areas of the last refresh (scratch)
   int normal_refresh_interval_ = 1;
   double release_depth_;  // m, TiebreakPairsSpec::release_depth
