@@ -149,7 +149,7 @@ class SegmentSearch {
   std::vector<double> boxes_[2];        // scratch of sort
   std::vector<unsigned char> keep_[2];  // scratch of sort: grid item can be in a list (segment_boxes)
   std::vector<double> margin_;          // (S) search margin of each segment's box, m
-  double allowance_ = 0, cell_ = 0;     // bucket allowance (a quarter of the median extent), bucket edge
+  double allowance_ = 0, cell_ = 0;     // bucket allowance (a sixteenth of the median extent), bucket edge
   double new_depth_cap_ = 0;            // bound of the new-contact depth until the next sort, m
   double list_allowance_ = 0;           // motion allowed before the next sort (<= allowance_), m
   std::vector<Index> cand_start_, cand_;  // (CSR over contact nodes) candidate segments
