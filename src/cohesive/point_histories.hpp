@@ -37,6 +37,8 @@ class PointHistories {
   }
 
   const std::vector<double>& damage() const { return damage_; }  // (num_points)
+  // For the SIMD path of intact points, which reads damage and updates max_opening in place.
+  double* max_opening_data() { return max_opening_.data(); }
   // Initial history of a pre-crack: point p starts separated.
   void separate(std::size_t p) { damage_[p] = 1.0; }
   // A point that lets go for good (its master gone): separated, its stick spring unloaded.

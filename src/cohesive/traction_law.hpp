@@ -87,6 +87,15 @@ struct PointResponse {
   double stiffness_shear = 0;
 };
 
+// The squared shear opening, the opening's norm and the stored secant energy, with explicit fused
+// multiply-adds: every caller (the law point by point, the SIMD path of intact tiebreak pairs)
+// rounds them alike, whatever the compiler would contract in each context.
+inline double shear_opening_sq(double u1, double u2) noexcept { return std::fma(u2, u2, u1 * u1); }
+inline double opening_norm(double ui, double us_sq) noexcept { return std::sqrt(std::fma(ui, ui, us_sq)); }
+inline double secant_energy(double kn, double kt, double u0, double us_sq) noexcept {
+  return 0.5 * std::fma(kn * u0, u0, kt * us_sq);
+}
+
 // Mixed-mode onset opening for direction cosines c2 = c^2, s2 = s^2 (c2 + s2 = 1).
 inline double onset_opening(const TractionLaw& law, double c2, double s2) noexcept {
   const double a = law.delta_n0, b = law.delta_s0;
@@ -182,12 +191,12 @@ namespace detail {
 // secant) path is inlined into the caller's loop; damage growth and contact are out of line.
 [[gnu::always_inline]] inline void traction_update(const TractionLaw& law, const double u[3], PointHistory& h, PointResponse& r) noexcept {
   const double ui = u[0] > 0 ? u[0] : 0;
-  const double us_sq = u[1] * u[1] + u[2] * u[2];
+  const double us_sq = shear_opening_sq(u[1], u[2]);
   const double two_ei = law.kn * ui * ui, two_eii = law.kt * us_sq;
   r.mixity = two_ei + two_eii > 0 ? two_eii / (two_ei + two_eii) : 0;
   r.dissipated_increment = 0;
   if (h.damage < 1) {
-    const double open = std::sqrt(ui * ui + us_sq);
+    const double open = opening_norm(ui, us_sq);
     if (open > h.max_opening) {
       // Below every onset the history only records the largest opening (grow_damage would find
       // open <= onset and do just that): most of an impact's pairs, most of the time.
@@ -207,7 +216,7 @@ namespace detail {
   r.traction[0] = kn_now * u[0];
   r.traction[1] = kt_now * u[1];
   r.traction[2] = kt_now * u[2];
-  r.elastic_energy = 0.5 * (kn_now * u[0] * u[0] + kt_now * us_sq);
+  r.elastic_energy = secant_energy(kn_now, kt_now, u[0], us_sq);
   r.damage = h.damage;
   r.stiffness_normal = kn_now;
   r.stiffness_shear = kt_now;

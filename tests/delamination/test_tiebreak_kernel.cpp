@@ -267,6 +267,68 @@ TEST(TiebreakKernel, FacesGiveTheNormalAndTheTributaryAreas) {
 
 // A 64 x 64 grid (4096 pairs, parallel above 2048) driven through damage: forces, energies and
 // history are bit-identical with 1 and 2 threads (fixed chunks, summed in order).
+// apply() takes the undamaged pairs below every onset in SIMD lanes and the others through the
+// law pair by pair. Whatever path a pair takes, its force, damage and largest opening must be the
+// law's own to the last bit. Reference: traction_update on each pair's opening, with the frame of
+// a flat interface (normal +z: t_1 = +y, t_2 = -x, so the opening is (d_z, d_y, -d_x) and the force
+// on the lower node area (-t_2, t_1, t_n), exactly). 2,500 pairs (two full blocks of 1024 and a
+// partial one), loaded, then partly unloaded (openings below their maximum, which are above the
+// elastic limit: the lanes must keep the maximum) and partly pressed; every fifth pair starts
+// separated. Energies: the same sums in the same order, to 1e-12.
+TEST(TiebreakKernel, PairsInSimdLanesGetTheLawsOwnResults) {
+  const int np = 2500;
+  TiebreakPairsSpec s;
+  std::vector<double> x0(2 * np * 3, 0.0), mass(2 * np, 1e-7);
+  for (int p = 0; p < np; ++p) {
+    s.lower.push_back(p);
+    s.upper.push_back(np + p);
+    s.area.push_back(1e-7 * (1 + 0.001 * p));
+    s.normals.insert(s.normals.end(), {0, 0, 1});
+    x0[3 * p] = x0[3 * (np + p)] = 1e-3 * p;
+  }
+  const auto params = test::table_8_6_option9();
+  TiebreakPairs pairs(params, s, x0.data(), mass.data());
+  const TractionLaw& law = pairs.law();
+  std::vector<PointHistory> h(np);
+  for (int p = 0; p < np; p += 5) {
+    pairs.separate_pair(std::size_t(p));
+    h[std::size_t(p)].damage = 1;
+  }
+  const double onset = law.delta_n0;  // 0.6 um
+  for (int pass = 0; pass < 2; ++pass) {
+    SCOPED_TRACE(pass == 0 ? "loading" : "unloading");
+    std::vector<double> x = x0, f(x.size(), 0.0);
+    for (int p = 0; p < np; ++p) {  // from 0.1 to 2 onsets, every direction; the second pass 0.7 of it
+      const double scale = (pass == 0 ? 1.0 : 0.7) * onset * (0.1 + 1.9 * ((p * 37) % 101) / 100.0);
+      const double d[3] = {scale * std::sin(0.7 * p), scale * std::cos(1.3 * p), scale * std::sin(0.3 * p + 1)};
+      for (int i = 0; i < 3; ++i) x[3 * (np + p) + i] += d[i];
+    }
+    pairs.apply(x.data(), nullptr, f.data(), 0.0);
+    double elastic = 0;
+    for (int p = 0; p < np; ++p) {
+      const std::size_t lo = 3 * std::size_t(p), up = 3 * std::size_t(np + p);
+      const double d[3] = {x[up] - x[lo] - 0.0, x[up + 1] - x[lo + 1] - 0.0, x[up + 2] - x[lo + 2] - 0.0};
+      const double u[3] = {d[2], d[1], -d[0]};
+      PointResponse r;
+      traction_update(law, u, h[std::size_t(p)], r);
+      const double area = pairs.area(std::size_t(p));
+      const double expected[3] = {area * -r.traction[2], area * r.traction[1], area * r.traction[0]};
+      for (int i = 0; i < 3; ++i) {
+        ASSERT_EQ(f[lo + i], expected[i]) << "pair " << p << " component " << i;
+        ASSERT_EQ(f[up + i], -expected[i]) << "pair " << p << " component " << i;
+      }
+      ASSERT_EQ(pairs.damage()[std::size_t(p)], h[std::size_t(p)].damage) << "pair " << p;
+      elastic += area * r.elastic_energy;
+    }
+    EXPECT_NEAR(pairs.elastic_energy(), elastic, 1e-12 * elastic);
+    // Both paths were taken: some pairs damaged, most not.
+    int damaged = 0;
+    for (double dmg : pairs.damage()) damaged += dmg > 0 && dmg < 1;
+    EXPECT_GT(damaged, 100);
+    EXPECT_LT(damaged, np / 2);
+  }
+}
+
 TEST(TiebreakKernel, OneAndTwoThreadsGiveBitIdenticalResults) {
   const int n = 64, np = n * n;
   const double a = 0.5e-3;
