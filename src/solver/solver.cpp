@@ -70,6 +70,9 @@ Solver::Solver(const model::Model& model) : model_(model) {
     throw RunError("control.dt2ms is set but the model's mass was not scaled (solver::apply_mass_scaling)");
   warnings_ = model.mass_scaling.warnings;
   const std::size_t n = model.num_nodes();
+  if (3 * n > std::size_t(std::numeric_limits<std::int32_t>::max()))
+    throw RunError(msg() << n << " nodes in one run; allowed at most " << std::numeric_limits<std::int32_t>::max() / 3
+                         << " (the element pass gathers the nodal dofs with 32-bit indices)");
   state_.x = model.X;
   state_.v = model.v0;
   state_.f.assign(3 * n, 0.0);
