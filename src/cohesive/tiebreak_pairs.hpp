@@ -118,8 +118,8 @@ class TiebreakPairs {
   // first shortcut: most pairs of an impact, most of the time), in one SIMD loop from the frames
   // and openings `fo`: elastic[j] = 1 for such a pair, with its largest opening updated in place,
   // its force on the lower node (out[0..2][j]) and its elastic energy per unit area (out[3][j]),
-  // each by traction_update's and apply's operations in their order; elastic[j] = 0 for the others
-  // (their history untouched), which take the general law.
+  // through the helpers traction_update and the general path use (so to the last bit the law's);
+  // elastic[j] = 0 for the others (their history keeps its values), which take the general law.
   static void intact_pairs(const TractionLaw& law, const double* __restrict damage, double* __restrict max_opening,
                            const PairConst* __restrict pairs, std::size_t begin, std::size_t m,
                            const double (*__restrict fo)[kChunk], double (*__restrict out)[kChunk],

@@ -40,7 +40,7 @@ void SegmentSearch::reset(const SegmentSet& set, const double* x) {
     median = sorted[S / 2];
   }
   // A sixteenth of the median extent: short lists against frequent sorts. Measured on the default
-  // scene (BENCHMARKS.md, "Search allowance"): a quarter, an eighth, a sixteenth and a 32nd gave
+  // scene (BENCHMARKS.md, "The whole event on one core below 150 ns per element-cycle"): a quarter, an eighth, a sixteenth and a 32nd gave
   // contact 4.9, 3.4, 3.0 and 3.1 s over its first millisecond, the same springs in every cycle.
   allowance_ = median / 16;
   margin_.resize(S);
