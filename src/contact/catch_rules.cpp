@@ -134,6 +134,23 @@ long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHis
       if (exposure) accept = depth;
       if (const double rn = reach(accept); d2 > rn * rn) return;
     }
+    double n0[3];
+    cross3(sg + 4, sg + 8, n0);
+    float normal_bound[2];  // deviation bound, 1 / |n0|
+    std::memcpy(normal_bound, sg + 11, sizeof normal_bound);
+    // Bounds of the gap before the projection. With the same terms as below,
+    //   (p - c) . n0/|n0| - m^2 |a3 . n0|/|n0| <= gap (n . n0/|n0|) <= (p - c) . n0/|n0| + m^2 |a3 . n0|/|n0|,
+    // so a positive lower bound means a node in front of the segment, and a negative upper bound
+    // u means gap <= u (n . n0/|n0| <= 1), a node at least |u| behind it. A plain node (gap = g) is
+    // caught at neither, in front nor deeper than `accept`; the margin of 1e-6 r covers the
+    // Newton projection's round-off. Spares the projections of inter-ply single surface contact,
+    // where each ply node lies over or under the faces of every ply within a segment's reach
+    // (first after the sphere test: the slab it leaves is what rejects most of those).
+    if (plain && double(normal_bound[0]) < 1) {
+      const double along = dx * n0[0] + dy * n0[1] + dz * n0[2], warp = maxpar * maxpar * std::abs(dot3(n0, sg + 12));
+      const double inv = double(normal_bound[1]), margin = 1e-6 * r;
+      if ((along - warp) * inv > margin || (along + warp) * inv < -accept - margin) return;
+    }
     if (q[0] == node || q[1] == node || q[2] == node || q[3] == node) return;
     if (set.single()) {
       const Index* o = set.segment_owner(std::size_t(s));
@@ -149,10 +166,6 @@ long catch_segment(const SegmentSet& set, SegmentSearch& search, const SpringHis
     // Orientation pre-check with the segment's centre normal, made conservative by the bound of
     // the normal's deviation over the segment: it skips only what the exact check below would skip
     // (a node beside a side face it cannot push through), without the projection.
-    double n0[3];
-    cross3(sg + 4, sg + 8, n0);
-    float normal_bound[2];  // deviation bound, 1 / |n0|
-    std::memcpy(normal_bound, sg + 11, sizeof normal_bound);
     if (nn_len > 0 && dot3(nn, n0) * double(normal_bound[1]) > (-0.3 + double(normal_bound[0])) * nn_len) return;
     // Can it beat the best so far (g > g_best)? An accepted node has a negative gap, p - c =
     // xi a1 + eta a2 + xi eta a3 + gap n with |xi|, |eta| <= m, and 0 < n . n0/|n0| <= 1 (normal
