@@ -161,6 +161,24 @@ const std::vector<contact::RigidWallConstraint>& Solver::rigid_walls() const {
   return walls_ ? walls_->walls() : none;
 }
 
+std::string Solver::moved_nodes_note() const {
+  // An element that inverts in the first cycles after contact set-up moved nodes onto surfaces is
+  // most often one of those nodes' elements: the release depth (0.4 max(thickness, sqrt(area)) by
+  // default) reached the faces of other parts stacked within it, as in plies under a single
+  // surface contact without PENMAX (docs/theory.md, "Inter-ply contact", "Release depth").
+  if (!contacts_ || state_.cycle > 2) return "";
+  std::string note;
+  for (std::size_t c = 0; c < contacts_->contacts().size(); ++c) {
+    const auto& ip = contacts_->initial_penetrations()[c];
+    if (!ip.moved || ip.count == 0) continue;
+    note += msg() << "; contact '" << contacts_->contacts()[c].name() << "' moved " << ip.count
+                  << " nodes onto its surface at t = 0, up to " << ip.max_depth
+                  << " m: if they are not real overlaps, set its PENMAX below the thickness of the elements "
+                     "(0.4 x the ply thickness for plies), or initial_penetration: offset";
+  }
+  return note;
+}
+
 const std::vector<contact::InitialPenetrations>& Solver::initial_penetrations() const {
   static const std::vector<contact::InitialPenetrations> none;
   return contacts_ ? contacts_->initial_penetrations() : none;
@@ -513,7 +531,8 @@ void Solver::check_after_pass(double dt_used) {
     throw RunError(msg() << "element " << total.bad_element << " (part '" << part_of_element(total.bad_element)
                          << "') has zero or negative volume (" << total.bad_volume << " m^3) at cycle " << s.cycle
                          << ", time " << s.time << " s after a step of " << dt_used
-                         << " s: the element inverted (excessive distortion, hourglassing or a too large step)");
+                         << " s: the element inverted (excessive distortion, hourglassing or a too large step)"
+                         << moved_nodes_note());
   }
   if (!eroded.empty()) {
     delete_elements(eroded);

@@ -86,6 +86,8 @@ class Solver {
   const std::vector<RigidBodyState>& rigid_bodies() const;
   // Initial penetrations found at t = 0, one per contact (for `check`).
   const std::vector<contact::InitialPenetrations>& initial_penetrations() const;
+  // For an element inverted in the first cycles: what the contacts' set-up moved (empty if nothing).
+  std::string moved_nodes_note() const;
   // Diagnoses found while setting up (e.g. the contact step controls the time step).
   const std::vector<std::string>& warnings() const { return warnings_; }
 

@@ -381,5 +381,34 @@ TEST(PlyContact, DefaultSceneInterfacesGiveNoContactAtStart) {
   EXPECT_EQ(plies.forces().active, 0u);  // the tup has not reached the plate (gap 0.05 mm)
 }
 
+// Without PENMAX the default release depth, 0.4 max(thickness, sqrt(area)) = 1 mm on the 2.5 mm
+// faces of 0.25 mm plies, reaches the faces of the plies stacked around each node: the set-up moves
+// 14,364 nodes up to 0.75 mm "onto the surface", and an element inverts in the first cycle. The
+// stop must name that cause and the remedy, not only the inverted element.
+TEST(PlyContact, DefaultSceneWithoutPenmaxStopsNamingTheMovedNodes) {
+  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/configs/low_velocity_impact.yaml");
+  ASSERT_TRUE(in) << "configs/low_velocity_impact.yaml";
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string scene = text.str();
+  scene += "  - name: plies\n    type: eroding_single_surface\n"
+           "    surfaces: [ply_1_45, ply_2_0, ply_3_m45, ply_4_90, ply_5_45, ply_6_0, ply_7_m45, ply_8_90,\n"
+           "               ply_9_90, ply_10_m45, ply_11_0, ply_12_45, ply_13_90, ply_14_m45, ply_15_0, ply_16_45]\n"
+           "    SOFT: 0\n";
+  const config::Scene s = config::load_scene_from_string(scene, "low_velocity_impact.yaml");
+  const model::Model m = model::build_model(s, mesh::mesh_scene(s));
+  solver::Solver solver(m);
+  ASSERT_GT(solver.initial_penetrations()[1].count, 1000u);
+  try {
+    for (int n = 0; n < 3; ++n) solver.step();
+    FAIL() << "expected the run to stop on an inverted element";
+  } catch (const RunError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("inverted"), std::string::npos) << what;
+    EXPECT_NE(what.find("contact 'plies' moved"), std::string::npos) << what;
+    EXPECT_NE(what.find("PENMAX"), std::string::npos) << what;
+  }
+}
+
 }  // namespace
 }  // namespace plyimpact
