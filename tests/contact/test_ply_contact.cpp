@@ -20,6 +20,7 @@
 #include <iostream>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 #include "config/scene_loader.hpp"
 #include "contact/bonded_interfaces.hpp"
@@ -346,18 +347,24 @@ TEST(PlyContact, SingleSurfaceReadsItsPartsFromSurfacesOrParts) {
 // The default scene with the plies' contact: the mesher's duplicated interface nodes coincide, all
 // bonded, so at t = 0 there is nothing to resolve and no spring.
 
-TEST(PlyContact, DefaultSceneInterfacesGiveNoContactAtStart) {
+// The default scene with the plies' single-surface contact (SOFT 0) appended, its further
+// fields in `extra` (YAML lines of the contact's map).
+model::Model default_scene_with_ply_contact(const std::string& extra) {
   std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/configs/low_velocity_impact.yaml");
-  ASSERT_TRUE(in) << "configs/low_velocity_impact.yaml";
+  if (!in) throw std::runtime_error("configs/low_velocity_impact.yaml not found");
   std::stringstream text;
   text << in.rdbuf();
-  std::string scene = text.str();
-  scene += "  - name: plies\n    type: eroding_single_surface\n"
-           "    surfaces: [ply_1_45, ply_2_0, ply_3_m45, ply_4_90, ply_5_45, ply_6_0, ply_7_m45, ply_8_90,\n"
-           "               ply_9_90, ply_10_m45, ply_11_0, ply_12_45, ply_13_90, ply_14_m45, ply_15_0, ply_16_45]\n"
-           "    SOFT: 0\n    PENMAX: 0.1 mm\n";
+  const std::string scene = text.str() +
+                            "  - name: plies\n    type: eroding_single_surface\n"
+                            "    surfaces: [ply_1_45, ply_2_0, ply_3_m45, ply_4_90, ply_5_45, ply_6_0, ply_7_m45, ply_8_90,\n"
+                            "               ply_9_90, ply_10_m45, ply_11_0, ply_12_45, ply_13_90, ply_14_m45, ply_15_0, ply_16_45]\n"
+                            "    SOFT: 0\n" + extra;
   const config::Scene s = config::load_scene_from_string(scene, "low_velocity_impact.yaml");
-  const model::Model m = model::build_model(s, mesh::mesh_scene(s));
+  return model::build_model(s, mesh::mesh_scene(s));
+}
+
+TEST(PlyContact, DefaultSceneInterfacesGiveNoContactAtStart) {
+  const model::Model m = default_scene_with_ply_contact("    PENMAX: 0.1 mm\n");
   ASSERT_EQ(m.contacts.size(), 2u);
   solver::Solver solver(m);
   const auto& plies = solver.contacts()[1];
@@ -386,17 +393,7 @@ TEST(PlyContact, DefaultSceneInterfacesGiveNoContactAtStart) {
 // 14,364 nodes up to 0.75 mm "onto the surface", and an element inverts in the first cycle. The
 // stop must name that cause and the remedy, not only the inverted element.
 TEST(PlyContact, DefaultSceneWithoutPenmaxStopsNamingTheMovedNodes) {
-  std::ifstream in(std::string(PLYIMPACT_SOURCE_DIR) + "/configs/low_velocity_impact.yaml");
-  ASSERT_TRUE(in) << "configs/low_velocity_impact.yaml";
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string scene = text.str();
-  scene += "  - name: plies\n    type: eroding_single_surface\n"
-           "    surfaces: [ply_1_45, ply_2_0, ply_3_m45, ply_4_90, ply_5_45, ply_6_0, ply_7_m45, ply_8_90,\n"
-           "               ply_9_90, ply_10_m45, ply_11_0, ply_12_45, ply_13_90, ply_14_m45, ply_15_0, ply_16_45]\n"
-           "    SOFT: 0\n";
-  const config::Scene s = config::load_scene_from_string(scene, "low_velocity_impact.yaml");
-  const model::Model m = model::build_model(s, mesh::mesh_scene(s));
+  const model::Model m = default_scene_with_ply_contact("");
   solver::Solver solver(m);
   ASSERT_GT(solver.initial_penetrations()[1].count, 1000u);
   try {
