@@ -10,7 +10,15 @@ namespace plyimpact::contact {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double default_release_depth(double volume, double area) {
+  // LS-DYNA's 0.4 x the segment thickness [KW *CONTACT, PENMAX]: for a solid the element's depth
+  // behind the face, V/A, so a node is caught only by the element it is inside of (a face of a
+  // 0.25 mm ply reaches 0.1 mm, not into the plies below it). A face without volume (a rigid
+  // surface-only body) has no thickness: 0.4 x its edge, sqrt(A).
+  return 0.4 * (volume > 0 ? volume / area : std::sqrt(area));
 }
+}  // namespace
 
 SegmentSetSpec segment_set_spec(const model::Contact& def) {
   const auto& spec = def.spec;
@@ -128,8 +136,7 @@ void SegmentSet::add_segment(const Index* q, const Index* owner, int side, doubl
   double m = 0;
   for (int k = 0; k < 4; ++k) m += 0.25 * model_->mass[q[k]];
   seg_node_mass_.push_back(m);
-  const double thickness = volume > 0 ? volume / area : 0.0;
-  seg_depth_.push_back(spec_.PENMAX > 0 ? spec_.PENMAX : 0.4 * std::max(thickness, std::sqrt(area)));
+  seg_depth_.push_back(spec_.PENMAX > 0 ? spec_.PENMAX : default_release_depth(volume, area));
 }
 
 void SegmentSet::add_side(int side, const SurfaceBuilder& builder, const AliveMask* alive,
