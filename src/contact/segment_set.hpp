@@ -32,7 +32,7 @@ struct SegmentSetSpec {
   bool impactor[2] = {false, false};   // the impactor surface belongs to that side
   bool single = false;                 // one side in contact with itself (side B unused)
   double stiffness_scale[2] = {1, 1};  // SLSFAC x SFS (side A), SLSFAC x SFM (side B)
-  double PENMAX = 0;                   // release depth, m (0: 0.4 max(thickness, sqrt(area)))
+  double PENMAX = 0;                   // release depth, m (0: 0.4 V/A of the face's element, 0.4 sqrt(A) without volume)
   bool keep_orphans = false;           // ENMASS 1: a node left without segments stays a contact node
 };
 

@@ -163,9 +163,9 @@ const std::vector<contact::RigidWallConstraint>& Solver::rigid_walls() const {
 
 std::string Solver::moved_nodes_note() const {
   // An element that inverts in the first cycles after contact set-up moved nodes onto surfaces is
-  // most often one of those nodes' elements: the release depth (0.4 max(thickness, sqrt(area)) by
-  // default) reached the faces of other parts stacked within it, as in plies under a single
-  // surface contact without PENMAX (docs/theory.md, "Inter-ply contact", "Release depth").
+  // most often one of those nodes' elements: the release depth (PENMAX) reached the faces of other
+  // parts stacked within it, as in plies under a single surface contact with a PENMAX deeper than
+  // a ply (docs/theory.md, "Inter-ply contact", "Release depth").
   if (!contacts_ || state_.cycle > 2) return "";
   std::string note;
   for (std::size_t c = 0; c < contacts_->contacts().size(); ++c) {
