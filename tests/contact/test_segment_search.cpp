@@ -204,6 +204,40 @@ TEST(SegmentSet, RebuildKeepsTheIdentityOfWhatSurvives) {
 // Scene: a 2 x 2 x 1 block of 1 mm elements 0.1 mm over a 16 x 16 x 1 plate, shifted by half an
 // element, so each block node lies 0.1 mm over a plate face centre and four plate nodes lie 0.1 mm
 // under the block's face centres.
+// The default release depth is LS-DYNA's 0.4 x the segment thickness: for a solid, the element's
+// depth behind the face, V/A. Reference: the box's geometry. A plate of 2 x 2 x 0.25 mm elements:
+// its top and bottom faces are 0.25 mm deep (0.1 mm), its side faces 2 mm deep (0.8 mm). PENMAX
+// replaces it on every face. Tolerance 1e-12 relative: V/A of an undistorted box is exact to
+// round-off.
+TEST(SegmentSet, DefaultReleaseDepthIsFourTenthsOfTheElementDepthBehindTheFace) {
+  const std::string yaml =
+      std::string("units: SI\ncontrol: {termination_time: 1}\n") +
+      "materials:\n  steel: {card: MAT_001, RO: 7850, E: 210e9, PR: 0.3}\n"
+      "sections:\n  s: {ELFORM: 1}\n"
+      "parts:\n  ply: {material: steel, section: s}\n"
+      "mesh:\n  boxes:\n    - {part: ply, size: [0.004, 0.004, 0.00025], elements: [2, 2, 1]}\n";
+  const model::Model model = test::model_from_yaml(yaml, "ply.yaml");
+  for (const double penmax : {0.0, 5e-5}) {
+    contact::SegmentSetSpec spec;
+    spec.single = true;
+    spec.blocks[0] = {model.parts[0].block};
+    spec.PENMAX = penmax;
+    const contact::SegmentSet set(model, spec, model.X);
+    ASSERT_EQ(set.num_segments(), 2u * 4 + 4 * 2);  // top and bottom 2 x 2, four sides of 2
+    std::size_t flat = 0, side = 0;
+    for (std::size_t s = 0; s < set.num_segments(); ++s) {
+      const Index* q = set.segment_nodes(s);
+      bool level = true;
+      for (int k = 1; k < 4; ++k) level = level && model.X[3 * std::size_t(q[k]) + 2] == model.X[3 * std::size_t(q[0]) + 2];
+      const double expected = penmax > 0 ? penmax : 0.4 * (level ? 0.25e-3 : 2e-3);
+      EXPECT_NEAR(set.release_depth(s), expected, 1e-12 * expected) << "segment " << s << (level ? " (top/bottom)" : " (side)");
+      ++(level ? flat : side);
+    }
+    EXPECT_EQ(flat, 8u);
+    EXPECT_EQ(side, 8u);
+  }
+}
+
 TEST(SegmentSearch, ListsHoldEverySegmentWithinReachOfANode) {
   const std::string yaml =
       "units: SI\ncontrol: {termination_time: 1}\n"
