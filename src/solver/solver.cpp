@@ -173,8 +173,8 @@ std::string Solver::moved_nodes_note() const {
     if (!ip.moved || ip.count == 0) continue;
     note += msg() << "; contact '" << contacts_->contacts()[c].name() << "' moved " << ip.count
                   << " nodes onto its surface at t = 0, up to " << ip.max_depth
-                  << " m: if they are not real overlaps, set its PENMAX below the thickness of the elements "
-                     "(0.4 x the ply thickness for plies), or initial_penetration: offset";
+                  << " m: if they are not real overlaps, leave its PENMAX at the default (0.4 x the thickness of "
+                     "the face's element) or set it below that thickness, or initial_penetration: offset";
   }
   return note;
 }
