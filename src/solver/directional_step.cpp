@@ -12,7 +12,7 @@ namespace plyimpact::solver {
 namespace {
 
 bool keeps_material_speed(const model::Model& model, const model::ElementBlock& block) {
-  if (block.rigid || block.elform != 1 || block.ihq == 4 || block.ihq == 5) return true;
+  if (block.rigid || block.elform > 2 || (block.elform == 1 && (block.ihq == 4 || block.ihq == 5))) return true;
   return !model.materials[block.material].has_axes();
 }
 
@@ -24,15 +24,64 @@ Eigen::Matrix<double, 6, 6> to_matrix(const std::array<double, 36>& C) {
   return m;
 }
 
+// Strain rows of node k (xx yy zz xy yz zx, engineering shear) for the gradient (bx, by, bz).
+Eigen::Matrix<double, 6, 3> strain_rows(double bx, double by, double bz) {
+  Eigen::Matrix<double, 6, 3> Bk;
+  Bk << bx, 0, 0, 0, by, 0, 0, 0, bz, by, bx, 0, 0, bz, by, bz, 0, bx;
+  return Bk;
+}
+
+// omega_max^2 rho / 8 of the element whose reference nodes are x, in the material axes Q (rows a,
+// b, c): the constant-strain limit for ELFORM 1, the whole B-bar stiffness for ELFORM 2.
+double element_eigenvalue(const std::array<double, 36>& C, const double* Q, const element::NodeVec& x, int elform) {
+  const auto to_axes = [Q](const double (&b)[3][8], double (&bm)[3][8]) {
+    for (int k = 0; k < 8; ++k)
+      for (int a = 0; a < 3; ++a) bm[a][k] = Q[3 * a] * b[0][k] + Q[3 * a + 1] * b[1][k] + Q[3 * a + 2] * b[2][k];
+  };
+  if (elform == 1) {
+    element::NodeVec bg;
+    element::hex8_mean_gradient(x, bg);
+    double bm[3][8];
+    to_axes(bg, bm);
+    return constant_strain_eigenvalue(C, bm);
+  }
+  double B[8][3][8], detj[8], Bm[8][3][8];
+  if (!element::hex8_gauss_gradients(x, B, detj)) return 0;  // refused by the mesh checks before any run
+  for (int g = 0; g < 8; ++g) to_axes(B[g], Bm[g]);
+  return fully_integrated_eigenvalue(C, Bm, detj);
+}
+
 }  // namespace
+
+double fully_integrated_eigenvalue(const std::array<double, 36>& C, const double (&B)[8][3][8], const double (&detj)[8]) {
+  double V = 0, bbar[3][8] = {};
+  for (int g = 0; g < 8; ++g) {
+    V += detj[g];
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 8; ++k) bbar[i][k] += detj[g] * B[g][i][k];
+  }
+  for (auto& row : bbar)
+    for (double& b : row) b /= V;
+  const Eigen::Matrix<double, 6, 6> Cm = to_matrix(C);
+  Eigen::Matrix<double, 24, 24> K = Eigen::Matrix<double, 24, 24>::Zero();
+  for (int g = 0; g < 8; ++g) {
+    // B-bar: every point's volumetric strain is the element mean (element_hex8_selective.cpp).
+    Eigen::Matrix<double, 6, 24> Bg;
+    for (int k = 0; k < 8; ++k) {
+      Eigen::Matrix<double, 6, 3> Bk = strain_rows(B[g][0][k], B[g][1][k], B[g][2][k]);
+      for (int j = 0; j < 3; ++j) Bk.block<3, 1>(0, j).array() += (bbar[j][k] - B[g][j][k]) / 3.0;
+      Bg.block<6, 3>(0, 3 * k) = Bk;
+    }
+    K.noalias() += detj[g] * Bg.transpose() * Cm * Bg;
+  }
+  return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 24, 24>>(K, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff() / V;
+}
 
 double constant_strain_eigenvalue(const std::array<double, 36>& C, const double (&b)[3][8]) {
   // A = sum_k B_k B_k^T with the strain rows of node k: xx yy zz xy yz zx (engineering shear).
   Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
   for (int k = 0; k < 8; ++k) {
-    const double bx = b[0][k], by = b[1][k], bz = b[2][k];
-    Eigen::Matrix<double, 6, 3> Bk;
-    Bk << bx, 0, 0, 0, by, 0, 0, 0, bz, by, bx, 0, 0, bz, by, bz, 0, bx;
+    const Eigen::Matrix<double, 6, 3> Bk = strain_rows(b[0][k], b[1][k], b[2][k]);
     A += Bk * Bk.transpose();
   }
   // lambda(A C) = lambda(L^T A L) with C = L L^T (C positive definite: the card checks refuse others).
@@ -50,16 +99,12 @@ std::vector<double> step_wave_speeds(const model::Model& model, const model::Ele
   std::vector<double> speed(block.size(), mat.wave_speed);
   bool any_slower = false;
   for (std::size_t e = 0; e < block.size(); ++e) {
-    element::NodeVec x, bg;
+    element::NodeVec x;
     model::gather_reference(model.X, &block.conn[8 * e], x);
-    const double V = element::hex8_mean_gradient(x, bg);
-    const double L = V / element::hex8_max_face_area(x);
+    const double L = element::hex8_volume(x) / element::hex8_max_face_area(x);
     // Gradients in material axes: b_m = Q b with the rows of Q the material axes a, b, c.
-    const auto& Q = model.orientations[block.orientation[e]].axes;
-    double bm[3][8];
-    for (int k = 0; k < 8; ++k)
-      for (int a = 0; a < 3; ++a) bm[a][k] = Q[3 * a] * bg[0][k] + Q[3 * a + 1] * bg[1][k] + Q[3 * a + 2] * bg[2][k];
-    const double omega = std::sqrt(8.0 * constant_strain_eigenvalue(C, bm) / mat.density);
+    const double* Q = model.orientations[block.orientation[e]].axes.data();
+    const double omega = std::sqrt(8.0 * element_eigenvalue(C, Q, x, block.elform) / mat.density);
     const double c_step = 0.5 * L * omega;
     if (c_step < speed[e]) {
       speed[e] = c_step;

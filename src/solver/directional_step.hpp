@@ -20,8 +20,14 @@
 // thin element carries at in-plane wavelengths (slower than its thickness mode; verified by
 // tests/core/test_directional_step.cpp, which drives every mode at the computed limit). The
 // stiffness forms IHQ 4/5 scale their stiffness with sum b^2, i.e. with the thickness, and keep
-// the material's bound. ELFORM 2's fully integrated modes are not bounded by the constant-strain
-// ones; it keeps L / c too.
+// the material's bound.
+//
+// ELFORM 2 has no hourglass modes to bound separately: its stiffness is the B-bar K = sum_g det J_g
+// B_g^T C B_g over the 2x2x2 points, so the exact element limit is omega_max^2 = lambda_max(K) / m
+// with m = rho V / 8, one 24 x 24 eigenvalue per element at the start. The element-by-element
+// bound (the assembled mesh's largest eigenvalue is at most the largest element's, for lumped
+// mass) makes it safe for the mesh. On a thin ply its fastest mode is again the thickness mode:
+// the parasitic shear of its bending modes acts over the in-plane lengths.
 #pragma once
 
 #include <vector>
@@ -32,11 +38,15 @@ namespace plyimpact::solver {
 
 // Per element of the block, the wave speed (m/s) its stable step uses: min(c, L omega_max / 2) at
 // the reference geometry. Empty when the block keeps the material's wave speed for every element
-// (isotropic, ELFORM 2, IHQ 4/5, rigid, or no element slower than c).
+// (isotropic, IHQ 4/5, rigid, or no element slower than c).
 std::vector<double> step_wave_speeds(const model::Model& model, const model::ElementBlock& block);
 
 // omega_max^2 rho / 8 of one element: lambda_max(C^1/2 A C^1/2), Pa/m^2, for the mean gradients b
 // (b[i][k] = dN_k/dx_i) in the axes of the stiffness C (Voigt xx yy zz xy yz zx, engineering shear).
 double constant_strain_eigenvalue(const std::array<double, 36>& C, const double (&b)[3][8]);
+
+// omega_max^2 rho / 8 of one ELFORM 2 element: lambda_max(K) / V, Pa/m^2, for the Gauss-point
+// gradients B (same layout as element::hex8_gauss_gradients) in the axes of C and their det J.
+double fully_integrated_eigenvalue(const std::array<double, 36>& C, const double (&B)[8][3][8], const double (&detj)[8]);
 
 }  // namespace plyimpact::solver

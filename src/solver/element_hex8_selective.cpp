@@ -93,9 +93,12 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     trDbar /= V;
     // The element step comes before the material (MAT_054 TFAIL and ERODE/TSMIN need it).
     const double Le = V / element::hex8_max_face_area(xe);  // characteristic length (step, bulk viscosity)
-    const double Qstep = step_q(Le, c, trDbar, q1, q2, st.step_q[e]);
+    // Wave speed of the element's fastest mode (directional_step.hpp): the step's and the bulk
+    // viscosity's, as in ELFORM 1.
+    const double c_step = st.step_wave_speed.empty() ? c : st.step_wave_speed[e];
+    const double Qstep = step_q(Le, c_step, trDbar, q1, q2, st.step_q[e]);
     st.step_q[e] = Qstep;
-    const double dte = element_time_step(Le, c, Qstep) * (blk.step_scale.empty() ? 1.0 : blk.step_scale[e]);
+    const double dte = element_time_step(Le, c_step, Qstep) * (blk.step_scale.empty() ? 1.0 : blk.step_scale[e]);
     if (dt == 0 && !st.initial_dt.empty()) st.initial_dt[e] = dte;
     if constexpr (Material::kElementRotation) {
       double Wbar[9] = {};
@@ -164,7 +167,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     }
     st.internal_energy[e] += dIE;
     r.internal_energy += dIE;
-    const double q = bulk_viscosity(rho, Le, c, trDbar, q1, q2);
+    const double q = bulk_viscosity(rho, Le, c_step, trDbar, q1, q2);
     r.bulk_viscous_energy += -0.5 * (st.bulk_q[e] + q) * trDbar * V * dt;  // trapezoid, as in ELFORM 1
     st.bulk_q[e] = q;
     for (int i = 0; i < 3; ++i)

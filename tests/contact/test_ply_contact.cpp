@@ -50,8 +50,12 @@ struct PlyScene {
 
 std::string yaml(const PlyScene& s, const std::vector<std::string>& plies) {
   std::ostringstream y;
+  // TSSFAC 0.45: the fully integrated plies step at their thickness mode (solver/directional_step.hpp),
+  // which the sudden start of a ply excites at omega dt ~ 1.8 at TSSFAC 0.9. The leapfrog's energy
+  // measure then oscillates by a few per cent (bonded plies: 2.9 % at 0.9, 0.60 % at 0.45, i.e. as
+  // dt^2: bounded, not a defect of the contact these tests are about).
   y << "units: mm-t-s-MPa\n"
-       "control: {termination_time: 1.0, threads: " << s.threads << "}\n"
+       "control: {termination_time: 1.0, tssfac: 0.45, threads: " << s.threads << "}\n"
        "materials:\n"
        // A compliant ply (a tenth of a carbon ply's moduli), so that a ply spanning a hole sags into it.
        "  ply: {card: MAT_002, RO: 1600 kg/m^3, EA: 12 GPa, EB: 1 GPa, EC: 1 GPa, PRBA: 0.025, PRCA: 0.025,\n"

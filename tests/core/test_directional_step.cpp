@@ -33,11 +33,11 @@ namespace {
 constexpr double kRho = 1550;
 
 // T800S/M21 ply card (configs/low_velocity_impact.yaml) as *MAT_002, SI units.
-std::string ply_scene(double beta_deg, double h, double t, int n, int ihq) {
+std::string ply_scene(double beta_deg, double h, double t, int n, int ihq, int elform = 1) {
   return "units: SI\ncontrol: {termination_time: 1, energy_ratio_limit: 0}\nmaterials:\n"
          "  m: {card: MAT_002, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.01895, PRCA: 0.01895, PRCB: 0.53,"
          " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0]}\n"
-         "sections:\n  s: {ELFORM: 1, IHQ: " + std::to_string(ihq) + ", QM: " + std::string(ihq == 6 ? "1" : "0.1") + ", Q1: 0, Q2: 0}\n"
+         "sections:\n  s: {ELFORM: " + std::to_string(elform) + ", IHQ: " + std::to_string(ihq) + ", QM: " + std::string(ihq == 6 ? "1" : "0.1") + ", Q1: 0, Q2: 0}\n"
          "parts:\n  p: {material: m, section: s, beta: " + std::to_string(beta_deg) + "}\n"
          "mesh:\n  boxes:\n    - {part: p, size: [" + std::to_string(n * h) + ", " + std::to_string(n * h) + ", " +
          std::to_string(t) + "], elements: [" + std::to_string(n) + ", " + std::to_string(n) + ", 1]}\n";
@@ -83,8 +83,8 @@ struct Excursion {
   double first = 0, second = 0;
 };
 
-Excursion energy_excursion(double beta, double factor, int cycles) {
-  model::Model model = test::model_from_yaml(ply_scene(beta, 2.5e-3, 0.25e-3, 4, 6), "plate.yaml");
+Excursion energy_excursion(double beta, double factor, int cycles, int elform = 1) {
+  model::Model model = test::model_from_yaml(ply_scene(beta, 2.5e-3, 0.25e-3, 4, 6, elform), "plate.yaml");
   std::mt19937 rng(12345);
   std::uniform_real_distribution<double> u(-1e-3, 1e-3);  // m/s: small strains, linear response
   for (double& v : model.v0) v = u(rng);
@@ -114,6 +114,33 @@ TEST(DirectionalStep, ComputedStepSitsJustBelowTheStabilityLimit) {
     EXPECT_LT(below.second, 1.1 * below.first) << "bounded at 0.98 of the step";
     EXPECT_LT(below.second, 1.0);
     EXPECT_GT(std::max(above.first, above.second), 1e3) << "unstable at 1.05 of the step";
+  }
+}
+
+// ELFORM 2 takes its step from the whole element stiffness (24 x 24 eigenvalue): the same drive of
+// every mode must be bounded at 0.98 and grow at 1.05.
+TEST(DirectionalStep, FullyIntegratedStepSitsJustBelowTheStabilityLimit) {
+  for (double beta : {0.0, 45.0}) {
+    const Excursion below = energy_excursion(beta, 0.98, 20000, 2), above = energy_excursion(beta, 1.05, 20000, 2);
+    std::cout << "ELFORM 2 ply plate at " << beta << " deg: energy excursion " << below.first << " then "
+              << below.second << " at 0.98 x step; " << above.first << " then " << above.second << " at 1.05 x step\n";
+    EXPECT_LT(below.second, 1.1 * below.first) << "bounded at 0.98 of the step";
+    EXPECT_LT(below.second, 1.0);
+    EXPECT_GT(std::max(above.first, above.second), 1e3) << "unstable at 1.05 of the step";
+  }
+}
+
+// A thin ELFORM 2 ply's fastest mode is its thickness mode, as the one-point element's: the
+// parasitic shear of its bending modes acts over the in-plane lengths.
+TEST(DirectionalStep, FullyIntegratedThinPlyTakesTheThicknessWave) {
+  const double t = 0.25e-3;
+  for (double beta : {0.0, 45.0, 90.0}) {
+    const model::Model model = test::model_from_yaml(ply_scene(beta, 100 * t, t, 1, 6, 2), "ply.yaml");
+    const auto& blk = model.blocks[0];
+    const auto speed = solver::step_wave_speeds(model, blk);
+    ASSERT_EQ(speed.size(), 1u);
+    const material::Stiffness6 C = hourglass::stiffness_in_material_axes(model.materials[blk.material]);
+    EXPECT_NEAR(speed[0] / std::sqrt(C[6 * 2 + 2] / kRho), 1.0, 2e-3);
   }
 }
 
