@@ -260,7 +260,7 @@ std::vector<SectionSpec> read_sections(const Reader& r) {
     s.allow_keys({"ELFORM", "IHQ", "QM", "Q1", "Q2"});
     SectionSpec spec;
     spec.name = name;
-    spec.ELFORM = s.int_choice_or("ELFORM", spec.ELFORM, {1, 2});
+    spec.ELFORM = s.int_choice_or("ELFORM", spec.ELFORM, {1, 2, -2});
     spec.IHQ = s.int_choice_or("IHQ", spec.IHQ, {1, 2, 3, 4, 5, 6});
     // IHQ 6 (assumed strain) scales the element's own elastic bending stiffness: QM = 1 is the
     // physical value (LS-DYNA's recommendation for elastic materials), more would stiffen it.

@@ -366,15 +366,18 @@ class Converter {
     throw InputError(msg() << where(c) << "*" << c.keyword << ": " << kCohesiveSolidsRefusal);
   }
 
-  // *SECTION_SOLID (Vol. I): SECID ELFORM AET; ELFORM 1 (default) or 2.
+  // *SECTION_SOLID (Vol. I): SECID ELFORM AET; ELFORM 1 (default), 2 or -2. LS-DYNA's -2 is its
+  // fully integrated solid for poor aspect ratios; ours has the same purpose by another method
+  // (element/hex8_ans.hpp), so a deck asking for it gets ours.
   std::string section_solid(const Card& c, std::string&) {
     const FixedCards cards(c, 1, skip());
     const Fields f = cards.fields(0, tens({"SECID", "ELFORM", "AET", "F4", "F5", "F6", "F7", "F8"}));
     const long id = f.integer("SECID", 0);
     const long elform = f.integer("ELFORM", 1);
     if (elform == 19 || elform == 20)
-      f.fail("ELFORM", std::string(kCohesiveSolidsRefusal) + "; allowed here: 1 or 2");
-    if (elform != 1 && elform != 2) f.fail("ELFORM", "element formulation not implemented; allowed: 1 or 2");
+      f.fail("ELFORM", std::string(kCohesiveSolidsRefusal) + "; allowed here: 1, 2 or -2");
+    if (elform != 1 && elform != 2 && elform != -2)
+      f.fail("ELFORM", "element formulation not implemented; allowed: 1, 2 or -2");
     f.require_default("AET", 0, "ambient element type");
     for (const char* n : {"F4", "F5", "F6", "F7", "F8"}) f.require_default(n, 0, "fields after AET");
     if (!sections_.emplace(id, elform).second) f.fail("SECID", "section id defined twice");

@@ -33,6 +33,9 @@ struct Point {
   const double* W;            // spin at the point
   const double* F = nullptr;  // deformation gradient (kTotalLagrangian), F-bar corrected
   double J = 1;               // det F used for the Cauchy stress (kTotalLagrangian)
+  // Green-Lagrange strain added to the one of F (kTotalLagrangian; engineering Voigt, reference
+  // axes): ELFORM -2's tied transverse shear (element/hex8_ans.hpp); null: none.
+  const double* dE = nullptr;
   double element_dt = 0;      // stable step of the element
 };
 

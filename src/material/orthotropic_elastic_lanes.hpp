@@ -11,8 +11,10 @@
 
 namespace plyimpact::material {
 
-// Total-Lagrangian stress of one point from F (row-major), its determinant J and C (6x6 row-major).
-inline void total_lagrangian_stress(const double F[9], double J, const double* C, double s[6]) {
+// Total-Lagrangian stress of one point from F (row-major), its determinant J and C (6x6 row-major);
+// dE, if given, is added to the Green-Lagrange strain of F (engineering Voigt).
+inline void total_lagrangian_stress(const double F[9], double J, const double* C, double s[6],
+                                    const double* dE = nullptr) {
   double E[6];  // engineering Voigt Green-Lagrange strain
   auto ftf = [&](int i, int j) { return F[i] * F[j] + F[3 + i] * F[3 + j] + F[6 + i] * F[6 + j]; };
   E[0] = 0.5 * (ftf(0, 0) - 1);
@@ -21,6 +23,8 @@ inline void total_lagrangian_stress(const double F[9], double J, const double* C
   E[3] = ftf(0, 1);
   E[4] = ftf(1, 2);
   E[5] = ftf(2, 0);
+  if (dE)
+    for (int i = 0; i < 6; ++i) E[i] += dE[i];
   double Sv[6];
   for (int r = 0; r < 6; ++r)
     Sv[r] = C[6 * r] * E[0] + C[6 * r + 1] * E[1] + C[6 * r + 2] * E[2] + C[6 * r + 3] * E[3] + C[6 * r + 4] * E[4] +
@@ -107,7 +111,7 @@ class OrthotropicElasticLanes {
 
   int update_point(const Point& p, double s[6], double* history) const {
     (void)history;
-    total_lagrangian_stress(p.F, p.J, orientations_[orientation_[p.element]].c_global.data(), s);
+    total_lagrangian_stress(p.F, p.J, orientations_[orientation_[p.element]].c_global.data(), s, p.dE);
     return 0;
   }
 

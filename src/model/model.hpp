@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <cstdint>
 #include <vector>
 
 #include "config/scene.hpp"
@@ -71,7 +72,9 @@ enum class HourglassKind { None, Viscous, Stiffness };
 struct ElementBlock {
   int part = 0;        // index into Model::parts
   int material = 0;    // index into Model::materials
-  int elform = 1;      // 1 one-point + hourglass, 2 eight-point selectively reduced
+  // 1 one-point + hourglass, 2 eight-point selectively reduced, -2 the same with assumed natural
+  // transverse shear for thin elements (element/hex8_ans.hpp)
+  int elform = 1;
   int ihq = 2;
   double qm = 0.1, q1 = 1.5, q2 = 0.06;
   std::vector<Index> conn;         // (num_elements, 8) global node indices
@@ -86,8 +89,12 @@ struct ElementBlock {
   // (num_elements) mass scaling (solver/mass_scaling): the element's step is its computed step
   // times this factor, sqrt((m + dm) / m) for its added mass dm; empty = no element scaled.
   std::vector<double> step_scale;
+  // (num_elements) ELFORM -2: the element's thin natural direction (0 xi, 1 eta, 2 zeta), the one
+  // with the shortest centre base vector dX/dxi_c at the reference geometry; empty otherwise.
+  std::vector<std::uint8_t> thin_axis;
   std::size_t size() const { return element_id.size(); }
-  int points() const { return elform == 2 ? 8 : 1; }
+  bool fully_integrated() const { return elform == 2 || elform == -2; }
+  int points() const { return fully_integrated() ? 8 : 1; }
   HourglassKind hourglass() const {
     if (elform != 1) return HourglassKind::None;
     return ihq >= 4 ? HourglassKind::Stiffness : HourglassKind::Viscous;  // IHQ 4, 5, 6 accumulate forces

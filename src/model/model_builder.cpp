@@ -37,6 +37,16 @@ std::vector<Index> select_nodes(const config::NodeSetSpec& spec, const Model& mo
   return nodes;
 }
 
+// The natural direction whose centre base vector dX/dxi_c is the shortest: a ply element's thickness.
+std::uint8_t thinnest_natural_direction(const double (&x)[3][8]) {
+  double J[9];
+  element::hex8_centroid_jacobian(x, J);
+  double length2[3] = {};
+  for (int c = 0; c < 3; ++c)
+    for (int a = 0; a < 3; ++a) length2[c] += J[3 * a + c] * J[3 * a + c];
+  return std::uint8_t(std::min_element(length2, length2 + 3) - length2);
+}
+
 template <class T>
 int index_by_name(const std::vector<T>& items, const std::string& name) {
   for (int i = 0; i < int(items.size()); ++i)
@@ -148,6 +158,7 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
                            << " (volume " << volume << " m^3); allowed: valid hexahedra with positive volume "
                            << "(check node order and degenerate elements)");
       block.volume0[e] = volume;
+      if (block.elform == -2) block.thin_axis.push_back(thinnest_natural_direction(x));
       if (mat.kind == MaterialKind::OrthotropicElastic && block.elform == 1) {
         double J[9], Jinv[9];
         element::hex8_centroid_jacobian(x, J);

@@ -10,18 +10,22 @@ std::vector<Subsystem> subsystems(const Model& model) {
   list.push_back({"explicit_dynamics", true, "central difference, lumped mass, Courant step x TSSFAC"});
 
   std::set<int> ihq;
-  bool elform2 = false, viscosity = false;
+  bool elform2 = false, ans = false, viscosity = false;
   std::set<std::string> cards;
   for (const auto& b : model.blocks) {
     if (b.size() == 0) continue;
     if (b.elform == 1) ihq.insert(b.ihq); else elform2 = true;
+    if (b.elform == -2) ans = true;
     viscosity = viscosity || b.q1 > 0 || b.q2 > 0;
     cards.insert(model.materials[b.material].card);
   }
   std::ostringstream hg;
   for (int i : ihq) hg << (hg.tellp() > 0 ? ", " : "IHQ ") << i;
   list.push_back({"hourglass_control", !ihq.empty(), ihq.empty() ? "no one-point (ELFORM 1) element" : hg.str()});
-  list.push_back({"fully_integrated_elements", elform2, elform2 ? "ELFORM 2, selectively reduced" : "no ELFORM 2 part"});
+  list.push_back({"fully_integrated_elements", elform2,
+                  !elform2 ? "no ELFORM 2 part"
+                  : ans    ? "ELFORM 2 / -2, selectively reduced; -2 with assumed natural transverse shear (thin elements)"
+                           : "ELFORM 2, selectively reduced"});
   list.push_back({"bulk_viscosity", viscosity, viscosity ? "compression only, Q1/Q2 per section" : "Q1 = Q2 = 0"});
   std::ostringstream mats;
   for (const auto& c : cards) mats << (mats.tellp() > 0 ? ", " : "") << c;

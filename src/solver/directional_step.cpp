@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "element/hex8.hpp"
+#include "element/hex8_ans.hpp"
 
 namespace plyimpact::solver {
 
@@ -32,8 +33,10 @@ Eigen::Matrix<double, 6, 3> strain_rows(double bx, double by, double bz) {
 }
 
 // omega_max^2 rho / 8 of the element whose reference nodes are x, in the material axes Q (rows a,
-// b, c): the constant-strain limit for ELFORM 1, the whole B-bar stiffness for ELFORM 2.
-double element_eigenvalue(const std::array<double, 36>& C, const double* Q, const element::NodeVec& x, int elform) {
+// b, c): the constant-strain limit for ELFORM 1, the whole B-bar stiffness for ELFORM 2 and -2
+// (thin: ELFORM -2's thin natural direction, -1 for ELFORM 2).
+double element_eigenvalue(const std::array<double, 36>& C, const double* Q, const element::NodeVec& x, int elform,
+                          int thin) {
   const auto to_axes = [Q](const double (&b)[3][8], double (&bm)[3][8]) {
     for (int k = 0; k < 8; ++k)
       for (int a = 0; a < 3; ++a) bm[a][k] = Q[3 * a] * b[0][k] + Q[3 * a + 1] * b[1][k] + Q[3 * a + 2] * b[2][k];
@@ -45,15 +48,20 @@ double element_eigenvalue(const std::array<double, 36>& C, const double* Q, cons
     to_axes(bg, bm);
     return constant_strain_eigenvalue(C, bm);
   }
-  double B[8][3][8], detj[8], Bm[8][3][8];
-  if (!element::hex8_gauss_gradients(x, B, detj)) return 0;  // refused by the mesh checks before any run
-  for (int g = 0; g < 8; ++g) to_axes(B[g], Bm[g]);
-  return fully_integrated_eigenvalue(C, Bm, detj);
+  element::NodeVec xm;  // the nodes in material axes: every gradient and base vector comes out in them
+  to_axes(x, xm);
+  return fully_integrated_eigenvalue(C, xm, thin);
 }
 
 }  // namespace
 
-double fully_integrated_eigenvalue(const std::array<double, 36>& C, const double (&B)[8][3][8], const double (&detj)[8]) {
+Eigen::Matrix<double, 24, 24> fully_integrated_stiffness(const std::array<double, 36>& C, const element::NodeVec& x,
+                                                         int thin) {
+  Eigen::Matrix<double, 24, 24> K = Eigen::Matrix<double, 24, 24>::Zero();
+  double B[8][3][8], detj[8], J[8][9];
+  if (!element::hex8_gauss_gradients(x, B, detj, J)) return K;  // refused by the mesh checks before any run
+  element::AnsRows ans;
+  if (thin >= 0) element::hex8_ans_shear_rows(x, thin, ans);
   double V = 0, bbar[3][8] = {};
   for (int g = 0; g < 8; ++g) {
     V += detj[g];
@@ -63,17 +71,35 @@ double fully_integrated_eigenvalue(const std::array<double, 36>& C, const double
   for (auto& row : bbar)
     for (double& b : row) b /= V;
   const Eigen::Matrix<double, 6, 6> Cm = to_matrix(C);
-  Eigen::Matrix<double, 24, 24> K = Eigen::Matrix<double, 24, 24>::Zero();
   for (int g = 0; g < 8; ++g) {
     // B-bar: every point's volumetric strain is the element mean (element_hex8_selective.cpp).
     Eigen::Matrix<double, 6, 24> Bg;
     for (int k = 0; k < 8; ++k) {
       Eigen::Matrix<double, 6, 3> Bk = strain_rows(B[g][0][k], B[g][1][k], B[g][2][k]);
       for (int j = 0; j < 3; ++j) Bk.block<3, 1>(0, j).array() += (bbar[j][k] - B[g][j][k]) / 3.0;
+      if (thin >= 0) {
+        // ELFORM -2: the assumed-shear change of the rate, made deviatoric as the element does
+        // (its B-bar correction follows it), with engineering shear.
+        double Jinv[9];
+        element::inverse3(J[g], Jinv);
+        for (int j = 0; j < 3; ++j) {
+          const double dd[2] = {ans[g][0][j][k], ans[g][1][j][k]};
+          double dD[6];
+          element::ans_cartesian_rate(Jinv, thin, dd, dD);
+          const double mean = (dD[0] + dD[1] + dD[2]) / 3.0;
+          for (int q = 0; q < 6; ++q) Bk(q, j) += q < 3 ? dD[q] - mean : 2 * dD[q];
+        }
+      }
       Bg.block<6, 3>(0, 3 * k) = Bk;
     }
     K.noalias() += detj[g] * Bg.transpose() * Cm * Bg;
   }
+  return K;
+}
+
+double fully_integrated_eigenvalue(const std::array<double, 36>& C, const element::NodeVec& x, int thin) {
+  const Eigen::Matrix<double, 24, 24> K = fully_integrated_stiffness(C, x, thin);
+  const double V = element::hex8_volume(x);
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 24, 24>>(K, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff() / V;
 }
 
@@ -104,7 +130,8 @@ std::vector<double> step_wave_speeds(const model::Model& model, const model::Ele
     const double L = element::hex8_volume(x) / element::hex8_max_face_area(x);
     // Gradients in material axes: b_m = Q b with the rows of Q the material axes a, b, c.
     const double* Q = model.orientations[block.orientation[e]].axes.data();
-    const double omega = std::sqrt(8.0 * element_eigenvalue(C, Q, x, block.elform) / mat.density);
+    const int thin = block.thin_axis.empty() ? -1 : int(block.thin_axis[e]);
+    const double omega = std::sqrt(8.0 * element_eigenvalue(C, Q, x, block.elform, thin) / mat.density);
     const double c_step = 0.5 * L * omega;
     if (c_step < speed[e]) {
       speed[e] = c_step;

@@ -30,8 +30,10 @@
 // the parasitic shear of its bending modes acts over the in-plane lengths.
 #pragma once
 
+#include <Eigen/Dense>
 #include <vector>
 
+#include "element/hex8.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact::solver {
@@ -45,8 +47,12 @@ std::vector<double> step_wave_speeds(const model::Model& model, const model::Ele
 // (b[i][k] = dN_k/dx_i) in the axes of the stiffness C (Voigt xx yy zz xy yz zx, engineering shear).
 double constant_strain_eigenvalue(const std::array<double, 36>& C, const double (&b)[3][8]);
 
-// omega_max^2 rho / 8 of one ELFORM 2 element: lambda_max(K) / V, Pa/m^2, for the Gauss-point
-// gradients B (same layout as element::hex8_gauss_gradients) in the axes of C and their det J.
-double fully_integrated_eigenvalue(const std::array<double, 36>& C, const double (&B)[8][3][8], const double (&detj)[8]);
+// omega_max^2 rho / 8 of one ELFORM 2 element: lambda_max(K) / V, Pa/m^2, for the nodes x in the
+// axes of C; thin >= 0: ELFORM -2 with that thin natural direction (element/hex8_ans.hpp).
+double fully_integrated_eigenvalue(const std::array<double, 36>& C, const element::NodeVec& x, int thin = -1);
+
+// The stiffness K of that element (24 x 24, dofs node-major: 3k + component), N/m.
+Eigen::Matrix<double, 24, 24> fully_integrated_stiffness(const std::array<double, 36>& C, const element::NodeVec& x,
+                                                         int thin = -1);
 
 }  // namespace plyimpact::solver

@@ -20,11 +20,11 @@ namespace plyimpact::solver {
 
 enum class ElementFamily {
   Hex8OnePoint,          // ELFORM 1: one point + hourglass control (element_hex8_one_point.cpp)
-  Hex8SelectiveReduced,  // ELFORM 2: 2x2x2 points, B-bar (element_hex8_selective.cpp)
+  Hex8SelectiveReduced,  // ELFORM 2 / -2: 2x2x2 points, B-bar (element_hex8_selective.cpp)
 };
 
 inline ElementFamily element_family(const model::ElementBlock& block) {
-  return block.elform == 2 ? ElementFamily::Hex8SelectiveReduced : ElementFamily::Hex8OnePoint;
+  return block.fully_integrated() ? ElementFamily::Hex8SelectiveReduced : ElementFamily::Hex8OnePoint;
 }
 
 void update_hex8_one_point(const model::Model& model, const model::ElementBlock& block, BlockState& state,

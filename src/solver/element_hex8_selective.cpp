@@ -10,10 +10,14 @@
 // could not be confirmed from a source we can cite), exactly as an ELFORM 1 element whose only
 // point fails; keeping it would leave a stress-free corner the other points must carry, a
 // mechanism the element has no hourglass control for. ERODE/TSMIN applies as in ELFORM 1.
+// ELFORM -2 adds the assumed natural transverse shear of element/hex8_ans.hpp to every point's rate
+// (before the B-bar correction, which thus keeps the element's mean volume rate) and its transpose,
+// with the deviatoric stress, to the forces.
 #include <algorithm>
 #include <cmath>
 
 #include "element/hex8.hpp"
+#include "element/hex8_ans.hpp"
 #include "element/kinematics.hpp"
 #include "solver/element_families.hpp"
 #include "solver/element_step.hpp"
@@ -42,7 +46,27 @@ inline void scatter(double* f, const Index* conn, const double fe[3][8]) {
   }
 }
 
-template <class Material>
+// ELFORM -2 with a total-Lagrangian material: the tied changes of the covariant Green-Lagrange
+// strain at Gauss point g in reference Cartesian axes, less the part that changes the volume (as
+// the rate form's B-bar correction removes the trace of its change: the pull-back of
+// tr(dD)/3 I is (dE : C^-1)/3 C, C = F^T F), engineering Voigt.
+void tied_green_lagrange(const double (&Xe)[3][8], int g, int thin, const double (&dE_cov)[2], const double F[9],
+                         double dE[6]) {
+  double JX[9], JXinv[9];
+  element::hex8_gauss_jacobian(Xe, g, JX);
+  element::inverse3(JX, JXinv);
+  double t[6];  // tensor Voigt
+  element::ans_cartesian_rate(JXinv, thin, dE_cov, t);
+  double C[9], Cinv[9];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) C[3 * i + j] = F[i] * F[j] + F[3 + i] * F[3 + j] + F[6 + i] * F[6 + j];
+  element::inverse3(C, Cinv);
+  const double trace = t[0] * Cinv[0] + t[1] * Cinv[4] + t[2] * Cinv[8] + 2 * (t[3] * Cinv[1] + t[4] * Cinv[5] + t[5] * Cinv[2]);
+  const int row[6] = {0, 4, 8, 1, 5, 2};  // Voigt xx yy zz xy yz zx in the row-major C
+  for (int q = 0; q < 6; ++q) dE[q] = (t[q] - trace / 3 * C[row[q]]) * (q < 3 ? 1.0 : 2.0);
+}
+
+template <bool kAns, class Material>
 void selective(Material& material, const model::Model& model, const model::ElementBlock& blk, BlockState& st,
                Index begin, Index end, const double* __restrict x, const double* __restrict v, double* __restrict f,
                double dt, ChunkResult& r) {
@@ -80,6 +104,31 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     double Lg[8][9];
     double trDbar = 0;
     bool singular = false;
+    // ELFORM -2: the assumed-shear rows at the mid-step geometry (rates) and at the end (forces).
+    [[maybe_unused]] const int thin = kAns ? int(blk.thin_axis[e]) : 0;
+    [[maybe_unused]] element::AnsRows ans_end;
+    [[maybe_unused]] double ans_rate[8][6];
+    [[maybe_unused]] double ans_strain[8][2];  // total-Lagrangian materials: the tied Green-Lagrange change
+    if constexpr (kAns && Material::kTotalLagrangian) element::hex8_ans_green_lagrange(xe, Xe, thin, ans_strain);
+    if constexpr (kAns) {
+      double xm[3][8];
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 8; ++k) xm[i][k] = xe[i][k] - 0.5 * dt * ve[i][k];
+      element::AnsRows ans_mid;
+      element::hex8_ans_shear_rows(xm, thin, ans_mid);
+      element::hex8_ans_shear_rows(xe, thin, ans_end);
+      for (int g = 0; g < 8; ++g) {
+        double dd[2] = {};
+        for (int m = 0; m < 2; ++m)
+          for (int c = 0; c < 3; ++c)
+            for (int k = 0; k < 8; ++k) dd[m] += ans_mid[g][m][c][k] * ve[c][k];
+        double Jv[9], Jm[9], Jm_inv[9];
+        element::hex8_gauss_jacobian(ve, g, Jv);
+        for (int i = 0; i < 9; ++i) Jm[i] = Jx[g][i] - 0.5 * dt * Jv[i];
+        element::inverse3(Jm, Jm_inv);  // singular: caught below by mid_step_velocity_gradient
+        element::ans_cartesian_rate(Jm_inv, thin, dd, ans_rate[g]);
+      }
+    }
     for (int g = 0; g < 8; ++g) {
       double Jv[9];
       element::hex8_gauss_jacobian(ve, g, Jv);
@@ -118,6 +167,8 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     for (int g = 0; g < 8; ++g) {
       double D[6], W[9];
       element::split_rate(Lg[g], D, W);
+      if constexpr (kAns)
+        for (int i = 0; i < 6; ++i) D[i] += ans_rate[g][i];
       const double vol_correction = (trDbar - (D[0] + D[1] + D[2])) / 3.0;
       D[0] += vol_correction;
       D[1] += vol_correction;
@@ -128,6 +179,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
       material::Point point{e, g, dt, D, W};
       point.element_dt = dte;
       double F[9];
+      [[maybe_unused]] double dE[6];  // ELFORM -2, total Lagrangian: read by the material below
       if constexpr (Material::kTotalLagrangian) {
         double Finv[9];
         element::velocity_gradient(Xe, B[g], Finv);
@@ -136,6 +188,10 @@ void selective(Material& material, const model::Model& model, const model::Eleme
         for (double& fij : F) fij *= scale;
         point.F = F;
         point.J = Jbar;
+        if constexpr (kAns) {
+          tied_green_lagrange(Xe, g, thin, ans_strain[g], F, dE);
+          point.dE = dE;
+        }
       }
       const int cause = material.update_point(point, s, h);
       if (cause > 0 && erode_cause == 0) erode_cause = cause;
@@ -150,6 +206,14 @@ void selective(Material& material, const model::Model& model, const model::Eleme
         fe[0][k] -= detj[g] * (s[0] * bx + s[3] * by + s[5] * bz + cx);
         fe[1][k] -= detj[g] * (s[3] * bx + s[1] * by + s[4] * bz + cy);
         fe[2][k] -= detj[g] * (s[5] * bx + s[4] * by + s[2] * bz + cz);
+      }
+      if constexpr (kAns) {
+        const double sdev[6] = {s[0] - p3, s[1] - p3, s[2] - p3, s[3], s[4], s[5]};
+        double Jinv[9], S[2];
+        element::inverse3(Jx[g], Jinv);
+        element::ans_conjugate_stress(Jinv, thin, sdev, S);
+        for (int c = 0; c < 3; ++c)
+          for (int k = 0; k < 8; ++k) fe[c][k] -= detj[g] * (S[0] * ans_end[g][0][c][k] + S[1] * ans_end[g][1][c][k]);
       }
     }
     if constexpr (Material::kElementRotation) material.end_element(e);
@@ -183,7 +247,12 @@ void update_hex8_selective(const model::Model& model, const model::ElementBlock&
                            Index begin, Index end, const double* x, const double* v, double* f, double dt,
                            ChunkResult& result) {
   with_material(model, block, state,
-                [&](auto&& material) { selective(material, model, block, state, begin, end, x, v, f, dt, result); });
+                [&](auto&& material) {
+                  if (block.elform == -2)
+                    selective<true>(material, model, block, state, begin, end, x, v, f, dt, result);
+                  else
+                    selective<false>(material, model, block, state, begin, end, x, v, f, dt, result);
+                });
 }
 
 }  // namespace plyimpact::solver

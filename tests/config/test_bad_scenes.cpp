@@ -114,7 +114,7 @@ const std::vector<BadCase> kCases = {
     {"unknown_card", "    card: MAT_002", "    card: MAT_058",
      {"scenes/bad.yaml:11:11: materials.ply.card: unknown material card; found 'MAT_058'; allowed MAT_001"}},
     {"bad_elform", "{ELFORM: 1, IHQ: 4}", "{ELFORM: 3, IHQ: 4}",
-     {"scenes/bad.yaml:23:18: sections.hex1.ELFORM: ELFORM must be one of 1, 2; found '3'; allowed one of 1, 2"}},
+     {"scenes/bad.yaml:23:18: sections.hex1.ELFORM: ELFORM must be one of 1, 2, -2; found '3'; allowed one of 1, 2, -2"}},
     {"bad_ihq", "{ELFORM: 1, IHQ: 4}", "{ELFORM: 1, IHQ: 7}",
      {"scenes/bad.yaml:23:26: sections.hex1.IHQ: IHQ must be one of 1, 2, 3, 4, 5, 6; found '7'"}},
     {"bad_qm_ihq6", "{ELFORM: 1, IHQ: 4}", "{ELFORM: 1, IHQ: 6, QM: 1.5}",
