@@ -34,6 +34,9 @@ inline void hex8_centroid_jacobian(const NodeVec& u, double J[9]) noexcept;
 // this L is exactly skew (a Cayley transform), so no spurious strain arises (second-order
 // accurate strain increments, as in DYNA3D/LULESH). Returns false if the mid-step Jacobian is singular.
 inline bool mid_step_velocity_gradient(const double Jx[9], const double Jv[9], double dt, double L[9]) noexcept;
+// The same, giving also the mid-step Jacobian Jm and its inverse.
+inline bool mid_step_velocity_gradient(const double Jx[9], const double Jv[9], double dt, double L[9], double Jm[9],
+                                       double Jm_inv[9]) noexcept;
 
 // Flanagan-Belytschko uniform (mean) gradient b_k = (1/V) dV/dx_k and the exact volume
 // V = (1/3) sum_k x_k . dV/dx_k (exact for any trilinear hexahedron). Returns V.
@@ -53,7 +56,8 @@ inline void hex8_corner_jacobians(const NodeVec& x, double detj[8]) noexcept;
 // 2x2x2 Gauss point data for ELFORM 2: gradients B[g][i][k] and det J[g] (weights are 1).
 // Returns false if any det J <= 0.
 // J (optional, may be nullptr) receives the Jacobians dx/dxi at the points, row-major.
-inline bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8], double (*J)[9] = nullptr) noexcept;
+inline bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8], double (*J)[9] = nullptr,
+                                 double (*Jinv)[9] = nullptr) noexcept;
 
 // Velocity Jacobian dv/dxi at Gauss point gp (same point order as hex8_gauss_gradients).
 inline void hex8_gauss_jacobian(const NodeVec& v, int gp, double J[9]) noexcept;

@@ -24,6 +24,7 @@
 
 #include <cmath>
 
+#include "core/lanes.hpp"
 #include "element/hex8.hpp"
 
 namespace plyimpact::element {
@@ -148,5 +149,154 @@ inline void ans_conjugate_stress(const double Jinv[9], int t, const double s[6],
     S[m] = 2 * (Gi[0] * sg[0] + Gi[1] * sg[1] + Gi[2] * sg[2]);
   }
 }
+
+// The element pass's form of the same tying, per element (the rows above are its matrix form, for
+// the stiffness of the stable step; the test AssumedShearElement holds the two to each other):
+//  - begin: base vectors and velocity derivatives at the four tying points (end-of-step geometry
+//    x; the mid-step one is x - dt/2 v), the tied covariant rates;
+//  - rate_change_lanes, at the Gauss points (lanes): the Cartesian change of each one's rate, from
+//    its own covariant rates d_it = (g_i . v,t + g_t . v,i) / 2 at the mid-step Jacobian Jm
+//    (inverse Jm_inv) and the velocity Jacobian Jv;
+//  - stress_for_gradients_lanes: the work conjugate S_m = 2 G^i . s' . G^t of each point's
+//    deviatoric stress s' (end geometry), and the stress whose B^T gives the standard forces less
+//    the point's own covariant shear, s - sum_m S_m sym(g_i g_t); it books S_m with the points'
+//    interpolation weights for the tying points;
+//  - add_tied_forces: the booked S_m times the tying points' rows (end geometry).
+class AnsElement {
+ public:
+  void begin(const NodeVec& x, const NodeVec& v, double dt, int t) noexcept {
+    t_ = t;
+    const Tying& ty = tying(t);
+    for (int m = 0; m < 2; ++m)
+      for (int side = 0; side < 2; ++side) {
+        const int i = (t + 1 + m) % 3;
+        const auto& dN = ty.dN[m][side];
+        double* gi = g_[m][side][0];
+        double* gt = g_[m][side][1];
+        double vi[3] = {}, vt[3] = {};
+        for (int c = 0; c < 3; ++c) {
+          gi[c] = gt[c] = 0;
+          for (int k = 0; k < 8; ++k) {
+            gi[c] += x[c][k] * dN[i][k], gt[c] += x[c][k] * dN[t][k];
+            vi[c] += v[c][k] * dN[i][k], vt[c] += v[c][k] * dN[t][k];
+          }
+        }
+        double d = 0;  // at the mid-step geometry
+        for (int c = 0; c < 3; ++c) d += (gi[c] - 0.5 * dt * vi[c]) * vt[c] + (gt[c] - 0.5 * dt * vt[c]) * vi[c];
+        tied_[m][side] = 0.5 * d;
+        booked_[m][side] = 0;
+      }
+  }
+
+  // The Cartesian change dD (tensor Voigt) of every point's rate, lanes = points (hex8_gauss_lanes.hpp).
+  void rate_change_lanes(const LaneVec<9>& Jm, const LaneVec<9>& Jv, const LaneVec<9>& Jm_inv,
+                         LaneVec<6>& dD) const noexcept {
+    const int t = t_;
+    for (int q = 0; q < 6; ++q) PLYIMPACT_LANES dD[q][l] = 0;
+    for (int m = 0; m < 2; ++m) {
+      const int i = (t + 1 + m) % 3;
+      const double tied0 = tied_[m][0], tied1 = tied_[m][1];
+      const double* w1 = weights(m);
+      PLYIMPACT_LANES {
+        double own = 0;
+        for (int c = 0; c < 3; ++c) own += Jm[3 * c + i][l] * Jv[3 * c + t][l] + Jm[3 * c + t][l] * Jv[3 * c + i][l];
+        const double dd = (1 - w1[l]) * tied0 + w1[l] * tied1 - 0.5 * own;
+        const double gi0 = Jm_inv[3 * i][l], gi1 = Jm_inv[3 * i + 1][l], gi2 = Jm_inv[3 * i + 2][l];
+        const double gt0 = Jm_inv[3 * t][l], gt1 = Jm_inv[3 * t + 1][l], gt2 = Jm_inv[3 * t + 2][l];
+        dD[0][l] += dd * 2 * gi0 * gt0;
+        dD[1][l] += dd * 2 * gi1 * gt1;
+        dD[2][l] += dd * 2 * gi2 * gt2;
+        dD[3][l] += dd * (gi0 * gt1 + gt0 * gi1);
+        dD[4][l] += dd * (gi1 * gt2 + gt1 * gi2);
+        dD[5][l] += dd * (gi2 * gt0 + gt2 * gi0);
+      }
+    }
+  }
+
+  // Every point's stress for its B^T forces, s - sum_m S_m sym(g_i g_t) with S_m = 2 G^i . s' . G^t
+  // (s' = s - p3 I; end geometry Jx, Jinv), and the S_m booked for the tying points.
+  void stress_for_gradients_lanes(const LaneVec<9>& Jx, const LaneVec<9>& Jinv, const LaneScalar& detj,
+                                  const LaneVec<6>& s, const LaneScalar& p3, LaneVec<6>& s_out) noexcept {
+    const int t = t_;
+    for (int q = 0; q < 6; ++q) PLYIMPACT_LANES s_out[q][l] = s[q][l];
+    for (int m = 0; m < 2; ++m) {
+      const int i = (t + 1 + m) % 3;
+      const double* w1 = weights(m);
+      alignas(64) double b0[kLanes], b1[kLanes];
+      PLYIMPACT_LANES {
+        const double d0 = s[0][l] - p3[l], d1 = s[1][l] - p3[l], d2 = s[2][l] - p3[l];
+        const double gt0 = Jinv[3 * t][l], gt1 = Jinv[3 * t + 1][l], gt2 = Jinv[3 * t + 2][l];
+        const double sg0 = d0 * gt0 + s[3][l] * gt1 + s[5][l] * gt2;
+        const double sg1 = s[3][l] * gt0 + d1 * gt1 + s[4][l] * gt2;
+        const double sg2 = s[5][l] * gt0 + s[4][l] * gt1 + d2 * gt2;
+        const double S = 2 * (Jinv[3 * i][l] * sg0 + Jinv[3 * i + 1][l] * sg1 + Jinv[3 * i + 2][l] * sg2);
+        const double ci0 = Jx[i][l], ci1 = Jx[3 + i][l], ci2 = Jx[6 + i][l];  // g_i: column i of Jx
+        const double ct0 = Jx[t][l], ct1 = Jx[3 + t][l], ct2 = Jx[6 + t][l];
+        s_out[0][l] -= S * ci0 * ct0;
+        s_out[1][l] -= S * ci1 * ct1;
+        s_out[2][l] -= S * ci2 * ct2;
+        s_out[3][l] -= 0.5 * S * (ci0 * ct1 + ct0 * ci1);
+        s_out[4][l] -= 0.5 * S * (ci1 * ct2 + ct1 * ci2);
+        s_out[5][l] -= 0.5 * S * (ci2 * ct0 + ct2 * ci0);
+        b1[l] = detj[l] * S * w1[l];
+        b0[l] = detj[l] * S - b1[l];
+      }
+      for (int l = 0; l < kLanes; ++l) booked_[m][0] += b0[l], booked_[m][1] += b1[l];
+    }
+  }
+
+  void add_tied_forces(double (&fe)[3][8]) const noexcept {
+    const Tying& ty = tying(t_);
+    for (int m = 0; m < 2; ++m)
+      for (int side = 0; side < 2; ++side) {
+        const int i = (t_ + 1 + m) % 3;
+        const auto& dN = ty.dN[m][side];
+        const double* gi = g_[m][side][0];
+        const double* gt = g_[m][side][1];
+        const double b = 0.5 * booked_[m][side];
+        for (int c = 0; c < 3; ++c)
+          for (int k = 0; k < 8; ++k) fe[c][k] -= b * (gi[c] * dN[t_][k] + gt[c] * dN[i][k]);
+      }
+  }
+
+ private:
+  struct Tying {
+    double dN[2][2][3][8];  // [m][side]: natural derivatives at the tying point
+  };
+  static const Tying& tying(int t) noexcept {
+    static const Tying tables[3] = {make(0), make(1), make(2)};
+    return tables[t];
+  }
+  static Tying make(int t) noexcept {
+    Tying ty{};
+    for (int m = 0; m < 2; ++m)
+      for (int side = 0; side < 2; ++side) {
+        double p[3] = {0, 0, 0};
+        p[(t + 2 - m) % 3] = side == 0 ? -1.0 : 1.0;  // the other in-plane direction
+        detail::natural_derivatives(p, ty.dN[m][side]);
+      }
+    return ty;
+  }
+  // Interpolation weights of the tying point on side 1 at the eight points, (1 + s) / 2 with s the
+  // point's natural coordinate along the other in-plane direction, for pair m.
+  const double* weights(int m) const noexcept {
+    static const Weights table;
+    return table.w[t_][m];
+  }
+  struct Weights {
+    alignas(64) double w[3][2][kLanes];
+    Weights() {
+      const double* s[3] = {kXi, kEta, kZeta};
+      for (int t = 0; t < 3; ++t)
+        for (int m = 0; m < 2; ++m)
+          for (int gp = 0; gp < kLanes; ++gp) w[t][m][gp] = 0.5 * (1 + s[(t + 2 - m) % 3][gp] / std::sqrt(3.0));
+    }
+  };
+
+  int t_ = 2;
+  double g_[2][2][2][3] = {};  // [m][side][g_i, g_t]: tying-point base vectors, end geometry
+  double tied_[2][2] = {};     // tied covariant rates, mid-step geometry
+  double booked_[2][2] = {};   // sum over the points of det J S_m x weight
+};
 
 }  // namespace plyimpact::element

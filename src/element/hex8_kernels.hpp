@@ -48,6 +48,11 @@ inline void hex8_centroid_jacobian(const NodeVec& u, double J[9]) noexcept {
 
 inline bool mid_step_velocity_gradient(const double Jx[9], const double Jv[9], double dt, double L[9]) noexcept {
   double Jm[9], Jinv[9];
+  return mid_step_velocity_gradient(Jx, Jv, dt, L, Jm, Jinv);
+}
+
+inline bool mid_step_velocity_gradient(const double Jx[9], const double Jv[9], double dt, double L[9], double Jm[9],
+                                       double Jinv[9]) noexcept {
   for (int i = 0; i < 9; ++i) Jm[i] = Jx[i] - 0.5 * dt * Jv[i];
   if (inverse3(Jm, Jinv) == 0.0) return false;
   for (int i = 0; i < 3; ++i)
@@ -225,7 +230,8 @@ inline void hex8_gauss_jacobian(const NodeVec& v, int gp, double J[9]) noexcept 
   detail::gauss_jacobian(v, detail::gauss_derivatives().dN[gp], J);
 }
 
-inline bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8], double (*Jout)[9]) noexcept {
+inline bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double detj[8], double (*Jout)[9],
+                                 double (*Jinv_out)[9]) noexcept {
   const detail::GaussDerivatives& table = detail::gauss_derivatives();
   bool ok = true;
   for (int gp = 0; gp < 8; ++gp) {
@@ -240,6 +246,8 @@ inline bool hex8_gauss_gradients(const NodeVec& x, double B[8][3][8], double det
       ok = false;
       continue;
     }
+    if (Jinv_out)
+      for (int i = 0; i < 9; ++i) Jinv_out[gp][i] = Jinv[i];
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 8; ++k)
         B[gp][i][k] = Jinv[0 * 3 + i] * dN[0][k] + Jinv[1 * 3 + i] * dN[1][k] + Jinv[2 * 3 + i] * dN[2][k];

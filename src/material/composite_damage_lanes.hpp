@@ -87,6 +87,7 @@ class CompositeDamageLanes {
   // axes stored at once (also for an element that erodes, as its stress is zero from then on).
   void begin_element(Index e, const double R[9], double dt, double element_dt) {
     std::copy_n(&axes_[9 * std::size_t(e)], 9, qo_);
+    std::copy_n(R, 9, r_);
     rotate_axes(qo_, R, qn_);
     ctx_ = CompositeDamageContext{};
     ctx_.element_dt = dt > 0 ? element_dt : 0.0;
@@ -97,6 +98,47 @@ class CompositeDamageLanes {
     return res.erode ? base_ + res.cause : 0;
   }
   void end_element(Index e) { std::copy_n(qn_, 9, &axes_[9 * std::size_t(e)]); }
+
+  // Multi-point families, after begin_element: the element's kLanes points at once (lane = point,
+  // history rows points_base + lane): intact points in SIMD lanes, the others by the general
+  // update, as update does for one-point elements. Writes each point's erosion code (0: alive).
+  PLYIMPACT_LANE_KERNEL void update_points(std::size_t points_base, double dt, const LaneVec<6>& D,
+                                           const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) {
+    bool intact[kLanes] = {};
+    IntactLaneResult r;
+    if (intact_lanes_) {
+      alignas(64) double Qo[9][kLanes], R[9][kLanes];
+      IntactLaneHistory h;
+      for (int i = 0; i < 9; ++i)
+        for (int l = 0; l < kLanes; ++l) Qo[i][l] = qo_[i], R[i][l] = r_[i];
+      for (int l = 0; l < kLanes; ++l) {
+        const double* hl = &history_[(points_base + l) * kCompositeDamageHistory];
+        for (int i = 0; i < 6; ++i) h.eps[i][l] = hl[composite_history::kStrain + i];
+        h.XT[l] = hl[composite_history::kXT], h.XC[l] = hl[composite_history::kXC];
+        h.crashfront[l] = hl[composite_history::kCrashfront];
+        h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
+        h.element_dt[l] = ctx_.element_dt;
+        h.initial_dt[l] = ctx_.initial_dt;
+        intact[l] = composite_damage_intact(hl);
+      }
+      composite_intact_lanes(p_, Qo, R, s_old, D, dt, h, r);
+    }
+    for (int l = 0; l < kLanes; ++l) {
+      double* hl = &history_[(points_base + l) * kCompositeDamageHistory];
+      erode[l] = 0;
+      if (intact[l] && r.event[l] == 0) {
+        for (int i = 0; i < 6; ++i) hl[composite_history::kStrain + i] = r.eps[i][l];
+        for (int m = 0; m < 4; ++m) hl[composite_history::kCriteria + m] = r.criteria[m][l];
+        for (int i = 0; i < 6; ++i) s[i][l] = r.s[i][l];
+        continue;
+      }
+      double sl[6], Dl[6];
+      for (int i = 0; i < 6; ++i) sl[i] = s_old[i][l], Dl[i] = D[i][l];
+      const auto res = composite_point_update(p_, qo_, qn_, Dl, dt, ctx_, sl, hl);
+      for (int i = 0; i < 6; ++i) s[i][l] = sl[i];
+      if (res.erode) erode[l] = base_ + res.cause;
+    }
+  }
 
  private:
   // The general point update of lane l (composite_point_update).
@@ -131,7 +173,7 @@ class CompositeDamageLanes {
   bool intact_lanes_;
   int lost_change_[kLanes] = {};
   alignas(64) double qnew_[9][kLanes] = {};
-  double qo_[9] = {}, qn_[9] = {};
+  double qo_[9] = {}, qn_[9] = {}, r_[9] = {};
   CompositeDamageContext ctx_;
 };
 

@@ -18,6 +18,8 @@
 
 #include "element/hex8.hpp"
 #include "element/hex8_ans.hpp"
+#include "element/hex8_gauss_lanes.hpp"
+#include "element/hex8_lanes.hpp"
 #include "element/kinematics.hpp"
 #include "solver/element_families.hpp"
 #include "solver/element_step.hpp"
@@ -66,6 +68,112 @@ void tied_green_lagrange(const double (&Xe)[3][8], int g, int thin, const double
   for (int q = 0; q < 6; ++q) dE[q] = (t[q] - trace / 3 * C[row[q]]) * (q < 3 ? 1.0 : 2.0);
 }
 
+// Whether the material updates an element's eight points at once (lane = point).
+template <class Material>
+concept PointLanes = requires(Material& m, const LaneVec<6>& a, LaneVec<6>& b, int (&e)[kLanes]) {
+  m.update_points(std::size_t{0}, 0.0, a, a, b, e);
+};
+
+// One element's eight points: their kinematics (lanes = points) and what the element sums of them.
+struct PointKinematics {
+  alignas(64) double Jx[9][kLanes], Jinv[9][kLanes], detj[kLanes];  // end of step
+  alignas(64) double B[3][8][kLanes];                                  // dN_k/dx_i, end of step
+  alignas(64) double L[9][kLanes], D[6][kLanes], trD[kLanes];          // mid-step rates
+  double V = 0, trDbar = 0, bbar[3][8] = {};
+};
+
+// Gradients, volume and mid-step rates of the element (xe, ve); false if a point's Jacobian is not
+// positive (worst: the smallest det J) or a mid-step Jacobian is singular (worst: V).
+template <bool kAns>
+bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double dt, element::AnsElement& ans,
+                      PointKinematics& k, double& worst) {
+  element::hex8_gauss_jacobians_lanes(xe, k.Jx);
+  element::inverse3_lanes(k.Jx, k.Jinv, k.detj);
+  worst = k.detj[0];
+  for (int l = 1; l < kLanes; ++l) worst = std::min(worst, k.detj[l]);
+  if (!(worst > 0)) return false;
+  element::hex8_gauss_gradients_lanes(k.Jinv, k.B);
+  k.V = element::lane_sum(k.detj);
+  for (int i = 0; i < 3; ++i)
+    for (int n = 0; n < 8; ++n) {
+      alignas(64) double w[kLanes];
+      PLYIMPACT_LANES w[l] = k.detj[l] * k.B[i][n][l];
+      k.bbar[i][n] = element::lane_sum(w) / k.V;
+    }
+  alignas(64) double Jv[9][kLanes], Jm[9][kLanes], Jm_inv[9][kLanes], det_mid[kLanes];
+  element::hex8_gauss_jacobians_lanes(ve, Jv);
+  for (int i = 0; i < 9; ++i) PLYIMPACT_LANES Jm[i][l] = k.Jx[i][l] - 0.5 * dt * Jv[i][l];
+  element::inverse3_lanes(Jm, Jm_inv, det_mid);
+  for (int l = 0; l < kLanes; ++l)
+    if (det_mid[l] == 0) {
+      worst = k.V;
+      return false;
+    }
+  for (int a = 0; a < 3; ++a)
+    for (int j = 0; j < 3; ++j)
+      PLYIMPACT_LANES k.L[3 * a + j][l] =
+          Jv[3 * a][l] * Jm_inv[j][l] + Jv[3 * a + 1][l] * Jm_inv[3 + j][l] + Jv[3 * a + 2][l] * Jm_inv[6 + j][l];
+  alignas(64) double Wax[3][kLanes];
+  element::split_rate_lanes(k.L, k.D, Wax, k.trD);
+  alignas(64) double w[kLanes];
+  PLYIMPACT_LANES w[l] = k.detj[l] * k.trD[l];
+  k.trDbar = element::lane_sum(w) / k.V;
+  // ELFORM -2's tied shear, before the B-bar correction, which then keeps the mean volume rate.
+  if constexpr (kAns) {
+    alignas(64) double dD[6][kLanes];
+    ans.rate_change_lanes(Jm, Jv, Jm_inv, dD);
+    for (int q = 0; q < 6; ++q) PLYIMPACT_LANES k.D[q][l] += dD[q][l];
+  }
+  PLYIMPACT_LANES {
+    const double correction = (k.trDbar - (k.D[0][l] + k.D[1][l] + k.D[2][l])) / 3.0;
+    k.D[0][l] += correction;
+    k.D[1][l] += correction;
+    k.D[2][l] += correction;
+  }
+  return true;
+}
+
+// Point by point, for materials without a lane update: each point's Point (D, spin, F) and stress.
+// Returns the erosion code of the first point that failed (0: none).
+template <bool kAns, class Material>
+int update_points_one_by_one(Material& material, const model::ElementBlock& blk, BlockState& st, Index e,
+                             double dt, double dte, const PointKinematics& k, const double (&Xe)[3][8], int thin,
+                             const double (&ans_strain)[8][2], std::size_t hsize, const LaneVec<6>& s_old,
+                             LaneVec<6>& s) {
+  int erode_cause = 0;
+  const double Jbar = k.V / blk.volume0[e];
+  for (int g = 0; g < 8; ++g) {
+    double D[6], W[9], sg[6];
+    for (int i = 0; i < 6; ++i) D[i] = k.D[i][g], sg[i] = s_old[i][g];
+    for (int a = 0; a < 3; ++a)
+      for (int j = 0; j < 3; ++j) W[3 * a + j] = 0.5 * (k.L[3 * a + j][g] - k.L[3 * j + a][g]);
+    double* h = hsize > 0 ? &st.history[(8 * std::size_t(e) + g) * hsize] : nullptr;
+    material::Point point{e, g, dt, D, W};
+    point.element_dt = dte;
+    double F[9];
+    [[maybe_unused]] double dE[6];  // ELFORM -2, total Lagrangian: read by the material below
+    if constexpr (Material::kTotalLagrangian) {
+      double Bg[3][8], Finv[9];
+      for (int i = 0; i < 3; ++i)
+        for (int n = 0; n < 8; ++n) Bg[i][n] = k.B[i][n][g];
+      element::velocity_gradient(Xe, Bg, Finv);
+      const double Jg = 1.0 / element::inverse3(Finv, F);
+      const double scale = std::cbrt(Jbar / Jg);
+      for (double& fij : F) fij *= scale;
+      point.F = F;
+      point.J = Jbar;
+      if constexpr (kAns) {
+        tied_green_lagrange(Xe, g, thin, ans_strain[g], F, dE);
+        point.dE = dE;
+      }
+    }
+    const int cause = material.update_point(point, sg, h);
+    if (cause > 0 && erode_cause == 0) erode_cause = cause;
+    for (int i = 0; i < 6; ++i) s[i][g] = sg[i];
+  }
+  return erode_cause;
+}
+
 template <bool kAns, class Material>
 void selective(Material& material, const model::Model& model, const model::ElementBlock& blk, BlockState& st,
                Index begin, Index end, const double* __restrict x, const double* __restrict v, double* __restrict f,
@@ -82,64 +190,23 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     gather(x, conn, xe);
     gather(v, conn, ve);
     if constexpr (Material::kTotalLagrangian) gather(X, conn, Xe);
-    double B[8][3][8], detj[8], Jx[8][9];
-    if (!element::hex8_gauss_gradients(xe, B, detj, Jx)) {
-      double worst = detj[0];
-      for (int g = 1; g < 8; ++g) worst = std::min(worst, detj[g]);
+    // ELFORM -2: the tied transverse shear (element/hex8_ans.hpp).
+    [[maybe_unused]] const int thin = kAns ? int(blk.thin_axis[e]) : 0;
+    element::AnsElement ans;
+    double ans_strain[8][2] = {};  // total-Lagrangian materials: the tied Green-Lagrange change
+    if constexpr (kAns) {
+      ans.begin(xe, ve, dt, thin);
+      if constexpr (Material::kTotalLagrangian) element::hex8_ans_green_lagrange(xe, Xe, thin, ans_strain);
+    }
+    PointKinematics k;
+    double worst = 0;
+    if (!point_kinematics<kAns>(xe, ve, dt, ans, k, worst)) {
       record_bad(r, blk.element_id[e], worst, std::isnan(worst));
       continue;
     }
-    double V = 0, bbar[3][8] = {};
-    for (int g = 0; g < 8; ++g) {
-      V += detj[g];
-      for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 8; ++k) bbar[i][k] += detj[g] * B[g][i][k];
-    }
-    for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 8; ++k) bbar[i][k] /= V;
+    const double V = k.V, trDbar = k.trDbar;
     st.volume[e] = V;
     const double rho = rho0 * blk.volume0[e] / V;
-    const double Jbar = V / blk.volume0[e];
-    // Mid-step rates at every point; the mean dilatation rate is their volume average.
-    double Lg[8][9];
-    double trDbar = 0;
-    bool singular = false;
-    // ELFORM -2: the assumed-shear rows at the mid-step geometry (rates) and at the end (forces).
-    [[maybe_unused]] const int thin = kAns ? int(blk.thin_axis[e]) : 0;
-    [[maybe_unused]] element::AnsRows ans_end;
-    [[maybe_unused]] double ans_rate[8][6];
-    [[maybe_unused]] double ans_strain[8][2];  // total-Lagrangian materials: the tied Green-Lagrange change
-    if constexpr (kAns && Material::kTotalLagrangian) element::hex8_ans_green_lagrange(xe, Xe, thin, ans_strain);
-    if constexpr (kAns) {
-      double xm[3][8];
-      for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 8; ++k) xm[i][k] = xe[i][k] - 0.5 * dt * ve[i][k];
-      element::AnsRows ans_mid;
-      element::hex8_ans_shear_rows(xm, thin, ans_mid);
-      element::hex8_ans_shear_rows(xe, thin, ans_end);
-      for (int g = 0; g < 8; ++g) {
-        double dd[2] = {};
-        for (int m = 0; m < 2; ++m)
-          for (int c = 0; c < 3; ++c)
-            for (int k = 0; k < 8; ++k) dd[m] += ans_mid[g][m][c][k] * ve[c][k];
-        double Jv[9], Jm[9], Jm_inv[9];
-        element::hex8_gauss_jacobian(ve, g, Jv);
-        for (int i = 0; i < 9; ++i) Jm[i] = Jx[g][i] - 0.5 * dt * Jv[i];
-        element::inverse3(Jm, Jm_inv);  // singular: caught below by mid_step_velocity_gradient
-        element::ans_cartesian_rate(Jm_inv, thin, dd, ans_rate[g]);
-      }
-    }
-    for (int g = 0; g < 8; ++g) {
-      double Jv[9];
-      element::hex8_gauss_jacobian(ve, g, Jv);
-      singular = singular || !element::mid_step_velocity_gradient(Jx[g], Jv, dt, Lg[g]);
-      trDbar += detj[g] * (Lg[g][0] + Lg[g][4] + Lg[g][8]);
-    }
-    if (singular) {
-      record_bad(r, blk.element_id[e], V, false);
-      continue;
-    }
-    trDbar /= V;
     // The element step comes before the material (MAT_054 TFAIL and ERODE/TSMIN need it).
     const double Le = V / element::hex8_max_face_area(xe);  // characteristic length (step, bulk viscosity)
     // Wave speed of the element's fastest mode (directional_step.hpp): the step's and the bulk
@@ -151,72 +218,69 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     if (dt == 0 && !st.initial_dt.empty()) st.initial_dt[e] = dte;
     if constexpr (Material::kElementRotation) {
       double Wbar[9] = {};
-      for (int g = 0; g < 8; ++g) {
-        double D[6], W[9];
-        element::split_rate(Lg[g], D, W);
-        for (int i = 0; i < 9; ++i) Wbar[i] += detj[g] * W[i] / V;
-      }
+      for (int a = 0; a < 3; ++a)
+        for (int j = 0; j < 3; ++j) {
+          alignas(64) double w[kLanes];
+          PLYIMPACT_LANES w[l] = k.detj[l] * 0.5 * (k.L[3 * a + j][l] - k.L[3 * j + a][l]);
+          Wbar[3 * a + j] = element::lane_sum(w) / V;
+        }
       double R[9];
       element::hughes_winget(Wbar, dt, R);
       material.begin_element(e, R, dt, dte);
     }
 
-    double fe[3][8] = {};
-    double dIE = 0, dIE_old = 0;  // dIE_old: the previous stress's half, all an eroding element books
+    // Material update of the eight points.
+    double* stress = &st.stress[6 * 8 * std::size_t(e)];  // (point, component)
+    alignas(64) double s_old[6][kLanes], s[6][kLanes];
+    for (int g = 0; g < 8; ++g)
+      for (int i = 0; i < 6; ++i) s_old[i][g] = stress[6 * g + i];
     int erode_cause = 0;  // > 0: a point failed (ErosionCause of the first)
-    for (int g = 0; g < 8; ++g) {
-      double D[6], W[9];
-      element::split_rate(Lg[g], D, W);
-      if constexpr (kAns)
-        for (int i = 0; i < 6; ++i) D[i] += ans_rate[g][i];
-      const double vol_correction = (trDbar - (D[0] + D[1] + D[2])) / 3.0;
-      D[0] += vol_correction;
-      D[1] += vol_correction;
-      D[2] += vol_correction;
-      double* s = &st.stress[6 * (8 * std::size_t(e) + g)];
-      double* h = hsize > 0 ? &st.history[(8 * std::size_t(e) + g) * hsize] : nullptr;
-      const double s_old[6] = {s[0], s[1], s[2], s[3], s[4], s[5]};
-      material::Point point{e, g, dt, D, W};
-      point.element_dt = dte;
-      double F[9];
-      [[maybe_unused]] double dE[6];  // ELFORM -2, total Lagrangian: read by the material below
-      if constexpr (Material::kTotalLagrangian) {
-        double Finv[9];
-        element::velocity_gradient(Xe, B[g], Finv);
-        const double Jg = 1.0 / element::inverse3(Finv, F);
-        const double scale = std::cbrt(Jbar / Jg);
-        for (double& fij : F) fij *= scale;
-        point.F = F;
-        point.J = Jbar;
-        if constexpr (kAns) {
-          tied_green_lagrange(Xe, g, thin, ans_strain[g], F, dE);
-          point.dE = dE;
-        }
-      }
-      const int cause = material.update_point(point, s, h);
-      if (cause > 0 && erode_cause == 0) erode_cause = cause;
-      double s_avg[6];
-      for (int i = 0; i < 6; ++i) s_avg[i] = 0.5 * (s_old[i] + s[i]);
-      dIE += detj[g] * element::stress_power(s_avg, D) * dt;
-      dIE_old += 0.5 * detj[g] * element::stress_power(s_old, D) * dt;
-      const double p3 = (s[0] + s[1] + s[2]) / 3.0;
-      for (int k = 0; k < 8; ++k) {
-        const double bx = B[g][0][k], by = B[g][1][k], bz = B[g][2][k];
-        const double cx = p3 * (bbar[0][k] - bx), cy = p3 * (bbar[1][k] - by), cz = p3 * (bbar[2][k] - bz);
-        fe[0][k] -= detj[g] * (s[0] * bx + s[3] * by + s[5] * bz + cx);
-        fe[1][k] -= detj[g] * (s[3] * bx + s[1] * by + s[4] * bz + cy);
-        fe[2][k] -= detj[g] * (s[5] * bx + s[4] * by + s[2] * bz + cz);
-      }
-      if constexpr (kAns) {
-        const double sdev[6] = {s[0] - p3, s[1] - p3, s[2] - p3, s[3], s[4], s[5]};
-        double Jinv[9], S[2];
-        element::inverse3(Jx[g], Jinv);
-        element::ans_conjugate_stress(Jinv, thin, sdev, S);
-        for (int c = 0; c < 3; ++c)
-          for (int k = 0; k < 8; ++k) fe[c][k] -= detj[g] * (S[0] * ans_end[g][0][c][k] + S[1] * ans_end[g][1][c][k]);
-      }
+    if constexpr (PointLanes<Material>) {
+      int codes[kLanes];
+      material.update_points(8 * std::size_t(e), dt, k.D, s_old, s, codes);
+      for (int g = 0; g < 8 && erode_cause == 0; ++g) erode_cause = codes[g];
+    } else {
+      erode_cause =
+          update_points_one_by_one<kAns>(material, blk, st, e, dt, dte, k, Xe, thin, ans_strain, hsize, s_old, s);
     }
     if constexpr (Material::kElementRotation) material.end_element(e);
+    for (int g = 0; g < 8; ++g)
+      for (int i = 0; i < 6; ++i) stress[6 * g + i] = s[i][g];
+
+    // Stress work (trapezoid rule; dIE_old: the previous stress's half, all an eroding element books).
+    alignas(64) double w_new[kLanes], w_old[kLanes], p3[kLanes];
+    PLYIMPACT_LANES {
+      double po = 0, pn = 0;
+      for (int i = 0; i < 3; ++i) po += s_old[i][l] * k.D[i][l], pn += s[i][l] * k.D[i][l];
+      for (int i = 3; i < 6; ++i) po += 2 * s_old[i][l] * k.D[i][l], pn += 2 * s[i][l] * k.D[i][l];
+      w_old[l] = 0.5 * k.detj[l] * po * dt;
+      w_new[l] = 0.5 * k.detj[l] * pn * dt;
+      p3[l] = (s[0][l] + s[1][l] + s[2][l]) / 3.0;
+    }
+    const double dIE_old = element::lane_sum(w_old), dIE = dIE_old + element::lane_sum(w_new);
+
+    // Forces: sum over the points of -det J (B^T s + p3 (bbar - b)) (ELFORM -2: s less each
+    // point's own covariant shear, plus the tied rows).
+    double fe[3][8] = {};
+    alignas(64) double sb[6][kLanes];
+    if constexpr (kAns)
+      ans.stress_for_gradients_lanes(k.Jx, k.Jinv, k.detj, s, p3, sb);
+    else
+      for (int q = 0; q < 6; ++q) PLYIMPACT_LANES sb[q][l] = s[q][l];
+    for (int n = 0; n < 8; ++n) {
+      alignas(64) double f0[kLanes], f1[kLanes], f2[kLanes];
+      PLYIMPACT_LANES {
+        const double bx = k.B[0][n][l], by = k.B[1][n][l], bz = k.B[2][n][l];
+        const double cx = p3[l] * (k.bbar[0][n] - bx), cy = p3[l] * (k.bbar[1][n] - by), cz = p3[l] * (k.bbar[2][n] - bz);
+        f0[l] = k.detj[l] * (sb[0][l] * bx + sb[3][l] * by + sb[5][l] * bz + cx);
+        f1[l] = k.detj[l] * (sb[3][l] * bx + sb[1][l] * by + sb[4][l] * bz + cy);
+        f2[l] = k.detj[l] * (sb[5][l] * bx + sb[4][l] * by + sb[2][l] * bz + cz);
+      }
+      fe[0][n] = -element::lane_sum(f0);
+      fe[1][n] = -element::lane_sum(f1);
+      fe[2][n] = -element::lane_sum(f2);
+    }
+    if constexpr (kAns) ans.add_tied_forces(fe);
     if (!(dte > 0) || !std::isfinite(dIE)) {
       record_bad(r, blk.element_id[e], V, true);
       continue;
@@ -235,7 +299,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     r.bulk_viscous_energy += -0.5 * (st.bulk_q[e] + q) * trDbar * V * dt;  // trapezoid, as in ELFORM 1
     st.bulk_q[e] = q;
     for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 8; ++k) fe[i][k] += q * V * bbar[i][k];
+      for (int n = 0; n < 8; ++n) fe[i][n] += q * V * k.bbar[i][n];
     scatter(f, conn, fe);
     record_dt(r, blk.element_id[e], dte);
   }
