@@ -11,7 +11,9 @@
 //
 //   d_at(point) = (1 - s_b) / 2 d_at(a = 0, b = -1, t = 0) + (1 + s_b) / 2 d_at(a = 0, b = +1, t = 0)
 //
-// (s_b: the point's natural coordinate b). Every other strain component stays at its Gauss point.
+// (s_b: the point's natural coordinate b). Every other strain component stays at its Gauss point,
+// and the element's B-bar averages the volume rate over each layer of points rather than the whole
+// element (solver/element_hex8_selective.cpp).
 // Here the difference to the Gauss-point value is returned as rows over the nodal velocities, so
 // the element adds it to its rates and the transpose to its forces (power-consistent).
 //

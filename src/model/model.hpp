@@ -90,7 +90,8 @@ struct ElementBlock {
   // times this factor, sqrt((m + dm) / m) for its added mass dm; empty = no element scaled.
   std::vector<double> step_scale;
   // (num_elements) ELFORM -2: the element's thin natural direction (0 xi, 1 eta, 2 zeta), the one
-  // with the shortest centre base vector dX/dxi_c at the reference geometry; empty otherwise.
+  // with the shortest centre base vector dX/dxi_c at the reference geometry (zeta, then eta, on a
+  // tie within 1 %); empty otherwise.
   std::vector<std::uint8_t> thin_axis;
   std::size_t size() const { return element_id.size(); }
   bool fully_integrated() const { return elform == 2 || elform == -2; }

@@ -62,21 +62,25 @@ Eigen::Matrix<double, 24, 24> fully_integrated_stiffness(const std::array<double
   if (!element::hex8_gauss_gradients(x, B, detj, J)) return K;  // refused by the mesh checks before any run
   element::AnsRows ans;
   if (thin >= 0) element::hex8_ans_shear_rows(x, thin, ans);
-  double V = 0, bbar[3][8] = {};
+  // B-bar: every point's volumetric strain is the element mean, or for ELFORM -2 the mean of its
+  // layer (the four points on its side of the mid-surface; element_hex8_selective.cpp).
+  const double* side[3] = {element::kXi, element::kEta, element::kZeta};
+  const auto layer = [&](int g) { return thin >= 0 && side[thin][g] > 0 ? 1 : 0; };
+  double V[2] = {}, bbar[2][3][8] = {};
   for (int g = 0; g < 8; ++g) {
-    V += detj[g];
+    V[layer(g)] += detj[g];
     for (int i = 0; i < 3; ++i)
-      for (int k = 0; k < 8; ++k) bbar[i][k] += detj[g] * B[g][i][k];
+      for (int k = 0; k < 8; ++k) bbar[layer(g)][i][k] += detj[g] * B[g][i][k];
   }
-  for (auto& row : bbar)
-    for (double& b : row) b /= V;
+  for (int y = 0; y < 2; ++y)
+    for (auto& row : bbar[y])
+      for (double& b : row) b = V[y] > 0 ? b / V[y] : 0.0;
   const Eigen::Matrix<double, 6, 6> Cm = to_matrix(C);
   for (int g = 0; g < 8; ++g) {
-    // B-bar: every point's volumetric strain is the element mean (element_hex8_selective.cpp).
     Eigen::Matrix<double, 6, 24> Bg;
     for (int k = 0; k < 8; ++k) {
       Eigen::Matrix<double, 6, 3> Bk = strain_rows(B[g][0][k], B[g][1][k], B[g][2][k]);
-      for (int j = 0; j < 3; ++j) Bk.block<3, 1>(0, j).array() += (bbar[j][k] - B[g][j][k]) / 3.0;
+      for (int j = 0; j < 3; ++j) Bk.block<3, 1>(0, j).array() += (bbar[layer(g)][j][k] - B[g][j][k]) / 3.0;
       if (thin >= 0) {
         // ELFORM -2: the assumed-shear change of the rate, made deviatoric as the element does
         // (its B-bar correction follows it), with engineering shear.

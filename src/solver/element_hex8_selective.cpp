@@ -11,8 +11,12 @@
 // point fails; keeping it would leave a stress-free corner the other points must carry, a
 // mechanism the element has no hourglass control for. ERODE/TSMIN applies as in ELFORM 1.
 // ELFORM -2 adds the assumed natural transverse shear of element/hex8_ans.hpp to every point's rate
-// (before the B-bar correction, which thus keeps the element's mean volume rate) and its transpose,
-// with the deviatoric stress, to the forces.
+// (before the B-bar correction, which thus keeps the mean volume rate) and its transpose, with the
+// deviatoric stress, to the forces; and its B-bar averages over each layer of four points (the two
+// sides of the mid-surface), not over the element, so that the volume rate of a bending field,
+// linear through the thickness, is kept: with the element mean a ply one element thick loses a
+// third of its own bending stiffness at zero Poisson's ratio (more where the sides are free to
+// expand; tests LaminateBending, CantileverFrequency). The layers still average in the plane.
 #include <algorithm>
 #include <cmath>
 
@@ -79,14 +83,24 @@ struct PointKinematics {
   alignas(64) double Jx[9][kLanes], Jinv[9][kLanes], detj[kLanes];  // end of step
   alignas(64) double B[3][8][kLanes];                                  // dN_k/dx_i, end of step
   alignas(64) double L[9][kLanes], D[6][kLanes], trD[kLanes];          // mid-step rates
-  double V = 0, trDbar = 0, bbar[3][8] = {};
+  double V = 0, trDbar = 0, bbar[3][8] = {};  // element means (step, bulk viscosity)
+  // The mean each point's volume rate is replaced by, and its gradient: the element's (ELFORM 2) or
+  // its layer's (ELFORM -2: the four points on the same side of the mid-surface).
+  alignas(64) double trD_mean[kLanes], bbar_pt[3][8][kLanes];
+  double V_layer[2] = {};
 };
+
+// ELFORM -2: the layer (0, 1) of Gauss point gp, by the sign of its thin natural coordinate.
+inline int layer_of(int gp, int thin) {
+  const double* s[3] = {element::kXi, element::kEta, element::kZeta};
+  return s[thin][gp] > 0 ? 1 : 0;
+}
 
 // Gradients, volume and mid-step rates of the element (xe, ve); false if a point's Jacobian is not
 // positive (worst: the smallest det J) or a mid-step Jacobian is singular (worst: V).
 template <bool kAns>
-bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double dt, element::AnsElement& ans,
-                      PointKinematics& k, double& worst) {
+bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double dt, int thin,
+                      element::AnsElement& ans, PointKinematics& k, double& worst) {
   element::hex8_gauss_jacobians_lanes(xe, k.Jx);
   element::inverse3_lanes(k.Jx, k.Jinv, k.detj);
   worst = k.detj[0];
@@ -94,11 +108,23 @@ bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double
   if (!(worst > 0)) return false;
   element::hex8_gauss_gradients_lanes(k.Jinv, k.B);
   k.V = element::lane_sum(k.detj);
+  // Layer sums (ELFORM -2) in point order, so that both layers together are the element's sum.
+  [[maybe_unused]] int layer[kLanes] = {};
+  if constexpr (kAns) {
+    for (int l = 0; l < kLanes; ++l) layer[l] = layer_of(l, thin), k.V_layer[layer[l]] += k.detj[l];
+  }
   for (int i = 0; i < 3; ++i)
     for (int n = 0; n < 8; ++n) {
       alignas(64) double w[kLanes];
       PLYIMPACT_LANES w[l] = k.detj[l] * k.B[i][n][l];
       k.bbar[i][n] = element::lane_sum(w) / k.V;
+      if constexpr (kAns) {
+        double sum[2] = {};
+        for (int l = 0; l < kLanes; ++l) sum[layer[l]] += w[l];
+        for (int l = 0; l < kLanes; ++l) k.bbar_pt[i][n][l] = sum[layer[l]] / k.V_layer[layer[l]];
+      } else {
+        PLYIMPACT_LANES k.bbar_pt[i][n][l] = k.bbar[i][n];
+      }
     }
   alignas(64) double Jv[9][kLanes], Jm[9][kLanes], Jm_inv[9][kLanes], det_mid[kLanes];
   element::hex8_gauss_jacobians_lanes(ve, Jv);
@@ -118,6 +144,13 @@ bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double
   alignas(64) double w[kLanes];
   PLYIMPACT_LANES w[l] = k.detj[l] * k.trD[l];
   k.trDbar = element::lane_sum(w) / k.V;
+  if constexpr (kAns) {
+    double sum[2] = {};
+    for (int l = 0; l < kLanes; ++l) sum[layer[l]] += w[l];
+    for (int l = 0; l < kLanes; ++l) k.trD_mean[l] = sum[layer[l]] / k.V_layer[layer[l]];
+  } else {
+    PLYIMPACT_LANES k.trD_mean[l] = k.trDbar;
+  }
   // ELFORM -2's tied shear, before the B-bar correction, which then keeps the mean volume rate.
   if constexpr (kAns) {
     alignas(64) double dD[6][kLanes];
@@ -125,7 +158,7 @@ bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double
     for (int q = 0; q < 6; ++q) PLYIMPACT_LANES k.D[q][l] += dD[q][l];
   }
   PLYIMPACT_LANES {
-    const double correction = (k.trDbar - (k.D[0][l] + k.D[1][l] + k.D[2][l])) / 3.0;
+    const double correction = (k.trD_mean[l] - (k.D[0][l] + k.D[1][l] + k.D[2][l])) / 3.0;
     k.D[0][l] += correction;
     k.D[1][l] += correction;
     k.D[2][l] += correction;
@@ -141,8 +174,21 @@ int update_points_one_by_one(Material& material, const model::ElementBlock& blk,
                              const double (&ans_strain)[8][2], std::size_t hsize, const LaneVec<6>& s_old,
                              LaneVec<6>& s) {
   int erode_cause = 0;
-  const double Jbar = k.V / blk.volume0[e];
+  // F-bar's volume ratio: the element's, or (ELFORM -2) the point's layer's, whose reference volume
+  // comes from the reference Jacobians.
+  double Jbar_pt[8];
+  for (int g = 0; g < 8; ++g) Jbar_pt[g] = k.V / blk.volume0[e];
+  if constexpr (kAns && Material::kTotalLagrangian) {
+    double V0_layer[2] = {};
+    for (int g = 0; g < 8; ++g) {
+      double JX[9];
+      element::hex8_gauss_jacobian(Xe, g, JX);
+      V0_layer[layer_of(g, thin)] += element::det3(JX);
+    }
+    for (int g = 0; g < 8; ++g) Jbar_pt[g] = k.V_layer[layer_of(g, thin)] / V0_layer[layer_of(g, thin)];
+  }
   for (int g = 0; g < 8; ++g) {
+    const double Jbar = Jbar_pt[g];
     double D[6], W[9], sg[6];
     for (int i = 0; i < 6; ++i) D[i] = k.D[i][g], sg[i] = s_old[i][g];
     for (int a = 0; a < 3; ++a)
@@ -200,7 +246,7 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     }
     PointKinematics k;
     double worst = 0;
-    if (!point_kinematics<kAns>(xe, ve, dt, ans, k, worst)) {
+    if (!point_kinematics<kAns>(xe, ve, dt, thin, ans, k, worst)) {
       record_bad(r, blk.element_id[e], worst, std::isnan(worst));
       continue;
     }
@@ -271,7 +317,8 @@ void selective(Material& material, const model::Model& model, const model::Eleme
       alignas(64) double f0[kLanes], f1[kLanes], f2[kLanes];
       PLYIMPACT_LANES {
         const double bx = k.B[0][n][l], by = k.B[1][n][l], bz = k.B[2][n][l];
-        const double cx = p3[l] * (k.bbar[0][n] - bx), cy = p3[l] * (k.bbar[1][n] - by), cz = p3[l] * (k.bbar[2][n] - bz);
+        const double cx = p3[l] * (k.bbar_pt[0][n][l] - bx), cy = p3[l] * (k.bbar_pt[1][n][l] - by),
+                     cz = p3[l] * (k.bbar_pt[2][n][l] - bz);
         f0[l] = k.detj[l] * (sb[0][l] * bx + sb[3][l] * by + sb[5][l] * bz + cx);
         f1[l] = k.detj[l] * (sb[3][l] * bx + sb[1][l] * by + sb[4][l] * bz + cy);
         f2[l] = k.detj[l] * (sb[5][l] * bx + sb[4][l] * by + sb[2][l] * bz + cz);
