@@ -16,9 +16,10 @@ static_assert(kLanes == 8, "one lane per Gauss point of the 2x2x2 rule");
 
 using GaussNodeLanes = double[3][8][kLanes];  // [component][node][point]
 
-// dN_k/dxi_c at the eight points, [c][k][point].
+// dN_k/dxi_c at the eight points, [c][k][point], and transposed, [c][point][k].
 struct GaussLaneTable {
   alignas(64) double dN[3][8][kLanes];
+  alignas(64) double dNT[3][kLanes][8];
   GaussLaneTable() {
     const double g = 1.0 / std::sqrt(3.0);
     for (int gp = 0; gp < kLanes; ++gp) {
@@ -27,6 +28,7 @@ struct GaussLaneTable {
         dN[0][k][gp] = 0.125 * kXi[k] * (1 + kEta[k] * eta) * (1 + kZeta[k] * zeta);
         dN[1][k][gp] = 0.125 * kEta[k] * (1 + kXi[k] * xi) * (1 + kZeta[k] * zeta);
         dN[2][k][gp] = 0.125 * kZeta[k] * (1 + kXi[k] * xi) * (1 + kEta[k] * eta);
+        for (int c = 0; c < 3; ++c) dNT[c][gp][k] = dN[c][k][gp];
       }
     }
   }
@@ -77,6 +79,25 @@ PLYIMPACT_LANE_KERNEL void hex8_gauss_gradients_lanes(const LaneVec<9>& Jinv, Ga
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 8; ++k)
       PLYIMPACT_LANES B[i][k][l] = Jinv[i][l] * dN[0][k][l] + Jinv[3 + i][l] * dN[1][k][l] + Jinv[6 + i][l] * dN[2][k][l];
+}
+
+// out[i][k] = sum over the points p of `points` (count of them, in that order) of
+// sum_c A[3i+c][p] dN_k/dxi_c(p): with A[3i+c] = w det J Jinv[3c+i] the weighted sum of the points'
+// gradients dN_k/dx_i (the B-bar's mean gradient), with A[3i+c] = det J (s Jinv^T)[i][c] the nodal
+// forces of the stress s, sum_p det J s B. Lanes are the eight nodes here: a sum over the points is
+// then a broadcast and a multiply-add per point, not a reduction across lanes per node.
+PLYIMPACT_LANE_KERNEL void hex8_gauss_gradient_sum(const LaneVec<9>& A, const int* points, int count,
+                                                   double (&out)[3][8]) {
+  static_assert(kLanes == 8, "node lanes");
+  const auto& dNT = gauss_lane_table().dNT;
+  for (int i = 0; i < 3; ++i) PLYIMPACT_LANES out[i][l] = 0;
+  for (int q = 0; q < count; ++q) {
+    const int p = points[q];
+    for (int i = 0; i < 3; ++i) {
+      const double a0 = A[3 * i][p], a1 = A[3 * i + 1][p], a2 = A[3 * i + 2][p];
+      PLYIMPACT_LANES out[i][l] += a0 * dNT[0][p][l] + a1 * dNT[1][p][l] + a2 * dNT[2][p][l];
+    }
+  }
 }
 
 // Sum over the lanes (the element's points), in lane order: the same sum for any thread count.

@@ -81,19 +81,52 @@ concept PointLanes = requires(Material& m, const LaneVec<6>& a, LaneVec<6>& b, i
 // One element's eight points: their kinematics (lanes = points) and what the element sums of them.
 struct PointKinematics {
   alignas(64) double Jx[9][kLanes], Jinv[9][kLanes], detj[kLanes];  // end of step
-  alignas(64) double B[3][8][kLanes];                                  // dN_k/dx_i, end of step
   alignas(64) double L[9][kLanes], D[6][kLanes], trD[kLanes];          // mid-step rates
-  double V = 0, trDbar = 0, bbar[3][8] = {};  // element means (step, bulk viscosity)
-  // The mean each point's volume rate is replaced by, and its gradient: the element's (ELFORM 2) or
-  // its layer's (ELFORM -2: the four points on the same side of the mid-surface).
-  alignas(64) double trD_mean[kLanes], bbar_pt[3][8][kLanes];
+  double V = 0, trDbar = 0;                                            // element (step, bulk viscosity)
+  // The B-bar's layers, each with its points: the element (ELFORM 2), or (ELFORM -2) its two halves,
+  // the four points either side of the mid-surface. Their volumes, their sums of det J dN/dx (the
+  // layer's mean gradient times its volume), and each point's layer-mean volume rate.
+  int layers = 1;
+  const int* points[2] = {};
   double V_layer[2] = {};
+  alignas(64) double grad_sum[2][3][8];
+  alignas(64) double trD_mean[kLanes];
 };
+
+// The points of the B-bar's layers (PointKinematics): all eight, or those with a negative and those
+// with a positive natural coordinate in the thin direction t (layers_of[t]).
+struct LayerPoints {
+  int all[8];
+  int halves[3][2][4];
+  LayerPoints() {
+    const double* s[3] = {element::kXi, element::kEta, element::kZeta};
+    for (int g = 0; g < 8; ++g) all[g] = g;
+    for (int t = 0; t < 3; ++t) {
+      int n[2] = {};
+      for (int g = 0; g < 8; ++g) {
+        const int side = s[t][g] > 0 ? 1 : 0;
+        halves[t][side][n[side]++] = g;
+      }
+    }
+  }
+};
+inline const LayerPoints& layer_points() {
+  static const LayerPoints table;
+  return table;
+}
 
 // ELFORM -2: the layer (0, 1) of Gauss point gp, by the sign of its thin natural coordinate.
 inline int layer_of(int gp, int thin) {
   const double* s[3] = {element::kXi, element::kEta, element::kZeta};
   return s[thin][gp] > 0 ? 1 : 0;
+}
+
+// dN_k/dx_i at Gauss point g (end of step).
+inline void gradients_at(const PointKinematics& k, int g, double (&B)[3][8]) {
+  const auto& dN = element::gauss_lane_table().dN;
+  for (int i = 0; i < 3; ++i)
+    for (int n = 0; n < 8; ++n)
+      B[i][n] = k.Jinv[i][g] * dN[0][n][g] + k.Jinv[3 + i][g] * dN[1][n][g] + k.Jinv[6 + i][g] * dN[2][n][g];
 }
 
 // Gradients, volume and mid-step rates of the element (xe, ve); false if a point's Jacobian is not
@@ -106,26 +139,25 @@ bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double
   worst = k.detj[0];
   for (int l = 1; l < kLanes; ++l) worst = std::min(worst, k.detj[l]);
   if (!(worst > 0)) return false;
-  element::hex8_gauss_gradients_lanes(k.Jinv, k.B);
   k.V = element::lane_sum(k.detj);
-  // Layer sums (ELFORM -2) in point order, so that both layers together are the element's sum.
-  [[maybe_unused]] int layer[kLanes] = {};
   if constexpr (kAns) {
-    for (int l = 0; l < kLanes; ++l) layer[l] = layer_of(l, thin), k.V_layer[layer[l]] += k.detj[l];
+    k.layers = 2;
+    k.points[0] = layer_points().halves[thin][0];
+    k.points[1] = layer_points().halves[thin][1];
+  } else {
+    k.layers = 1;
+    k.points[0] = layer_points().all;
   }
+  const int per_layer = 8 / k.layers;
+  alignas(64) double A[9][kLanes];  // det J Jinv^T: the gradient sums' weights
   for (int i = 0; i < 3; ++i)
-    for (int n = 0; n < 8; ++n) {
-      alignas(64) double w[kLanes];
-      PLYIMPACT_LANES w[l] = k.detj[l] * k.B[i][n][l];
-      k.bbar[i][n] = element::lane_sum(w) / k.V;
-      if constexpr (kAns) {
-        double sum[2] = {};
-        for (int l = 0; l < kLanes; ++l) sum[layer[l]] += w[l];
-        for (int l = 0; l < kLanes; ++l) k.bbar_pt[i][n][l] = sum[layer[l]] / k.V_layer[layer[l]];
-      } else {
-        PLYIMPACT_LANES k.bbar_pt[i][n][l] = k.bbar[i][n];
-      }
-    }
+    for (int c = 0; c < 3; ++c) PLYIMPACT_LANES A[3 * i + c][l] = k.detj[l] * k.Jinv[3 * c + i][l];
+  for (int layer = 0; layer < k.layers; ++layer) {
+    element::hex8_gauss_gradient_sum(A, k.points[layer], per_layer, k.grad_sum[layer]);
+    double v = 0;
+    for (int q = 0; q < per_layer; ++q) v += k.detj[k.points[layer][q]];
+    k.V_layer[layer] = v;
+  }
   alignas(64) double Jv[9][kLanes], Jm[9][kLanes], Jm_inv[9][kLanes], det_mid[kLanes];
   element::hex8_gauss_jacobians_lanes(ve, Jv);
   for (int i = 0; i < 9; ++i) PLYIMPACT_LANES Jm[i][l] = k.Jx[i][l] - 0.5 * dt * Jv[i][l];
@@ -144,12 +176,10 @@ bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double
   alignas(64) double w[kLanes];
   PLYIMPACT_LANES w[l] = k.detj[l] * k.trD[l];
   k.trDbar = element::lane_sum(w) / k.V;
-  if constexpr (kAns) {
-    double sum[2] = {};
-    for (int l = 0; l < kLanes; ++l) sum[layer[l]] += w[l];
-    for (int l = 0; l < kLanes; ++l) k.trD_mean[l] = sum[layer[l]] / k.V_layer[layer[l]];
-  } else {
-    PLYIMPACT_LANES k.trD_mean[l] = k.trDbar;
+  for (int layer = 0; layer < k.layers; ++layer) {
+    double sum = 0;
+    for (int q = 0; q < per_layer; ++q) sum += w[k.points[layer][q]];
+    for (int q = 0; q < per_layer; ++q) k.trD_mean[k.points[layer][q]] = sum / k.V_layer[layer];
   }
   // ELFORM -2's tied shear, before the B-bar correction, which then keeps the mean volume rate.
   if constexpr (kAns) {
@@ -164,6 +194,35 @@ bool point_kinematics(const double (&xe)[3][8], const double (&ve)[3][8], double
     k.D[2][l] += correction;
   }
   return true;
+}
+
+// The element's nodal forces of its points' stresses sb (less the ANS part, which the caller adds)
+// with the B-bar pressure p3: -sum over the points of det J ((sb - p3 I) B + p3 bbar_layer).
+inline void stress_forces(const PointKinematics& k, const LaneVec<6>& sb, const LaneScalar& p3, double (&fe)[3][8]) {
+  alignas(64) double T[9][kLanes];  // det J (sb - p3 I) Jinv^T
+  PLYIMPACT_LANES {
+    const double r[3][3] = {{sb[0][l] - p3[l], sb[3][l], sb[5][l]},
+                            {sb[3][l], sb[1][l] - p3[l], sb[4][l]},
+                            {sb[5][l], sb[4][l], sb[2][l] - p3[l]}};
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c)
+        T[3 * a + c][l] =
+            k.detj[l] * (r[a][0] * k.Jinv[3 * c][l] + r[a][1] * k.Jinv[3 * c + 1][l] + r[a][2] * k.Jinv[3 * c + 2][l]);
+  }
+  alignas(64) double fs[3][8];
+  element::hex8_gauss_gradient_sum(T, layer_points().all, 8, fs);
+  double pressure[2] = {};  // each layer's sum of det J p3, over its volume
+  const int per_layer = 8 / k.layers;
+  for (int layer = 0; layer < k.layers; ++layer) {
+    for (int q = 0; q < per_layer; ++q) pressure[layer] += k.detj[k.points[layer][q]] * p3[k.points[layer][q]];
+    pressure[layer] /= k.V_layer[layer];
+  }
+  for (int i = 0; i < 3; ++i)
+    for (int n = 0; n < 8; ++n) {
+      double f = fs[i][n];
+      for (int layer = 0; layer < k.layers; ++layer) f += pressure[layer] * k.grad_sum[layer][i][n];
+      fe[i][n] = -f;
+    }
 }
 
 // Point by point, for materials without a lane update: each point's Point (D, spin, F) and stress.
@@ -200,8 +259,7 @@ int update_points_one_by_one(Material& material, const model::ElementBlock& blk,
     [[maybe_unused]] double dE[6];  // ELFORM -2, total Lagrangian: read by the material below
     if constexpr (Material::kTotalLagrangian) {
       double Bg[3][8], Finv[9];
-      for (int i = 0; i < 3; ++i)
-        for (int n = 0; n < 8; ++n) Bg[i][n] = k.B[i][n][g];
+      gradients_at(k, g, Bg);
       element::velocity_gradient(Xe, Bg, Finv);
       const double Jg = 1.0 / element::inverse3(Finv, F);
       const double scale = std::cbrt(Jbar / Jg);
@@ -305,28 +363,14 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     }
     const double dIE_old = element::lane_sum(w_old), dIE = dIE_old + element::lane_sum(w_new);
 
-    // Forces: sum over the points of -det J (B^T s + p3 (bbar - b)) (ELFORM -2: s less each
-    // point's own covariant shear, plus the tied rows).
-    double fe[3][8] = {};
+    // Forces (ELFORM -2: s less each point's own covariant shear, plus the tied rows).
+    double fe[3][8];
     alignas(64) double sb[6][kLanes];
     if constexpr (kAns)
       ans.stress_for_gradients_lanes(k.Jx, k.Jinv, k.detj, s, p3, sb);
     else
       for (int q = 0; q < 6; ++q) PLYIMPACT_LANES sb[q][l] = s[q][l];
-    for (int n = 0; n < 8; ++n) {
-      alignas(64) double f0[kLanes], f1[kLanes], f2[kLanes];
-      PLYIMPACT_LANES {
-        const double bx = k.B[0][n][l], by = k.B[1][n][l], bz = k.B[2][n][l];
-        const double cx = p3[l] * (k.bbar_pt[0][n][l] - bx), cy = p3[l] * (k.bbar_pt[1][n][l] - by),
-                     cz = p3[l] * (k.bbar_pt[2][n][l] - bz);
-        f0[l] = k.detj[l] * (sb[0][l] * bx + sb[3][l] * by + sb[5][l] * bz + cx);
-        f1[l] = k.detj[l] * (sb[3][l] * bx + sb[1][l] * by + sb[4][l] * bz + cy);
-        f2[l] = k.detj[l] * (sb[5][l] * bx + sb[4][l] * by + sb[2][l] * bz + cz);
-      }
-      fe[0][n] = -element::lane_sum(f0);
-      fe[1][n] = -element::lane_sum(f1);
-      fe[2][n] = -element::lane_sum(f2);
-    }
+    stress_forces(k, sb, p3, fe);
     if constexpr (kAns) ans.add_tied_forces(fe);
     if (!(dte > 0) || !std::isfinite(dIE)) {
       record_bad(r, blk.element_id[e], V, true);
@@ -345,8 +389,13 @@ void selective(Material& material, const model::Model& model, const model::Eleme
     const double q = bulk_viscosity(rho, Le, c_step, trDbar, q1, q2);
     r.bulk_viscous_energy += -0.5 * (st.bulk_q[e] + q) * trDbar * V * dt;  // trapezoid, as in ELFORM 1
     st.bulk_q[e] = q;
+    // q V bbar, bbar = the element's mean gradient
     for (int i = 0; i < 3; ++i)
-      for (int n = 0; n < 8; ++n) fe[i][n] += q * V * k.bbar[i][n];
+      for (int n = 0; n < 8; ++n) {
+        double g = 0;
+        for (int layer = 0; layer < k.layers; ++layer) g += k.grad_sum[layer][i][n];
+        fe[i][n] += q * g;
+      }
     scatter(f, conn, fe);
     record_dt(r, blk.element_id[e], dte);
   }
