@@ -14,6 +14,7 @@
 #include <cmath>
 
 #include "element/hex8.hpp"
+#include "element/hex8_gauss_lanes.hpp"
 #include "element/hex8_lanes.hpp"
 #include "element/kinematics.hpp"
 
@@ -270,6 +271,45 @@ TEST(Hex8Kernels, CharacteristicLengthAndCubeRoot) {
     EXPECT_NEAR(Le[l], Ls, kTol * Ls);
     EXPECT_NEAR(cbrtV[l], std::cbrt(V[l]), kCbrtTol * cbrtV[l]);
   }
+}
+
+// The fully integrated pass's sums over the points with the nodes as lanes
+// (element/hex8_gauss_lanes.hpp): on a distorted element, sum_g det J_g B_g over all points and over
+// a subset equal the scalar kernel's gradients summed point by point (same products, other order:
+// round-off only), and with A = det J s Jinv^T the sum is the nodal force sum_g det J s B_g.
+TEST(Hex8Kernels, GaussGradientSumsEqualThePointByPointSums) {
+  element::LaneNodeVec xl;
+  distorted_elements(xl);
+  double xe[3][8];
+  lane_of(xl, 3, xe);
+  double B[8][3][8], detj[8], J[8][9], Jinv[8][9];
+  ASSERT_TRUE(element::hex8_gauss_gradients(xe, B, detj, J, Jinv));
+  const double s[3][3] = {{1.0, 0.3, -0.2}, {0.3, -0.5, 0.7}, {-0.2, 0.7, 0.4}};
+  alignas(64) double A[9][kLanes], T[9][kLanes];
+  for (int g = 0; g < 8; ++g)
+    for (int i = 0; i < 3; ++i)
+      for (int c = 0; c < 3; ++c) {
+        A[3 * i + c][g] = detj[g] * Jinv[g][3 * c + i];
+        T[3 * i + c][g] = 0;
+        for (int b = 0; b < 3; ++b) T[3 * i + c][g] += detj[g] * s[i][b] * Jinv[g][3 * c + b];
+      }
+  const int all[8] = {0, 1, 2, 3, 4, 5, 6, 7}, some[3] = {6, 1, 4};
+  alignas(64) double sum_all[3][8], sum_some[3][8], forces[3][8];
+  element::hex8_gauss_gradient_sum(A, all, 8, sum_all);
+  element::hex8_gauss_gradient_sum(A, some, 3, sum_some);
+  element::hex8_gauss_gradient_sum(T, all, 8, forces);
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 8; ++k) {
+      double e_all = 0, e_some = 0, e_force = 0;
+      for (int g = 0; g < 8; ++g) {
+        e_all += detj[g] * B[g][i][k];
+        for (int b = 0; b < 3; ++b) e_force += detj[g] * s[i][b] * B[g][b][k];
+      }
+      for (int g : some) e_some += detj[g] * B[g][i][k];
+      EXPECT_NEAR(sum_all[i][k], e_all, kTol) << i << ' ' << k;
+      EXPECT_NEAR(sum_some[i][k], e_some, kTol) << i << ' ' << k;
+      EXPECT_NEAR(forces[i][k], e_force, kTol) << i << ' ' << k;
+    }
 }
 
 }  // namespace
