@@ -171,16 +171,16 @@ class AnsElement {
     const Tying& ty = tying(t);
     for (int m = 0; m < 2; ++m)
       for (int side = 0; side < 2; ++side) {
-        const int i = (t + 1 + m) % 3;
-        const auto& dN = ty.dN[m][side];
+        const Edge& edge = ty.edge[m][side];
         double* gi = g_[m][side][0];
         double* gt = g_[m][side][1];
         double vi[3] = {}, vt[3] = {};
         for (int c = 0; c < 3; ++c) {
           gi[c] = gt[c] = 0;
-          for (int k = 0; k < 8; ++k) {
-            gi[c] += x[c][k] * dN[i][k], gt[c] += x[c][k] * dN[t][k];
-            vi[c] += v[c][k] * dN[i][k], vt[c] += v[c][k] * dN[t][k];
+          for (int q = 0; q < 4; ++q) {
+            const int k = edge.node[q];
+            gi[c] += x[c][k] * edge.di[q], gt[c] += x[c][k] * edge.dt[q];
+            vi[c] += v[c][k] * edge.di[q], vt[c] += v[c][k] * edge.dt[q];
           }
         }
         double d = 0;  // at the mid-step geometry
@@ -251,19 +251,26 @@ class AnsElement {
     const Tying& ty = tying(t_);
     for (int m = 0; m < 2; ++m)
       for (int side = 0; side < 2; ++side) {
-        const int i = (t_ + 1 + m) % 3;
-        const auto& dN = ty.dN[m][side];
+        const Edge& edge = ty.edge[m][side];
         const double* gi = g_[m][side][0];
         const double* gt = g_[m][side][1];
         const double b = 0.5 * booked_[m][side];
-        for (int c = 0; c < 3; ++c)
-          for (int k = 0; k < 8; ++k) fe[c][k] -= b * (gi[c] * dN[t_][k] + gt[c] * dN[i][k]);
+        for (int q = 0; q < 4; ++q) {
+          const int k = edge.node[q];
+          for (int c = 0; c < 3; ++c) fe[c][k] -= b * (gi[c] * edge.dt[q] + gt[c] * edge.di[q]);
+        }
       }
   }
 
  private:
+  // A tying point, the mid-point of a mid-surface edge: only the four nodes on that side of the
+  // element have nonzero natural derivatives there, dN/dxi_i and dN/dxi_t = +-1/4.
+  struct Edge {
+    int node[4];
+    double di[4], dt[4];
+  };
   struct Tying {
-    double dN[2][2][3][8];  // [m][side]: natural derivatives at the tying point
+    Edge edge[2][2];  // [m][side]
   };
   static const Tying& tying(int t) noexcept {
     static const Tying tables[3] = {make(0), make(1), make(2)};
@@ -273,9 +280,15 @@ class AnsElement {
     Tying ty{};
     for (int m = 0; m < 2; ++m)
       for (int side = 0; side < 2; ++side) {
+        const int i = (t + 1 + m) % 3;
         double p[3] = {0, 0, 0};
         p[(t + 2 - m) % 3] = side == 0 ? -1.0 : 1.0;  // the other in-plane direction
-        detail::natural_derivatives(p, ty.dN[m][side]);
+        double dN[3][8];
+        detail::natural_derivatives(p, dN);
+        Edge& edge = ty.edge[m][side];
+        int q = 0;
+        for (int k = 0; k < 8; ++k)
+          if (dN[i][k] != 0 || dN[t][k] != 0) edge.node[q] = k, edge.di[q] = dN[i][k], edge.dt[q] = dN[t][k], ++q;
       }
     return ty;
   }
