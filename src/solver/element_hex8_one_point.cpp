@@ -51,8 +51,18 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
   const double qm = blk.qm, q1 = blk.q1, q2 = blk.q2;
   const double erode_tsmin = model.control.erode_tsmin;
 
+  const std::size_t hsize = std::size_t(mat.history_size());
   for (Index e0 = begin; e0 < end; e0 += kLanes) {
     const int n = int(std::min<Index>(kLanes, end - e0));
+    // The next batch's histories, stresses and hourglass forces asked for one batch ahead (they stream through the
+    // pass; element_hex8_selective.cpp does the same per element).
+    if (e0 + 2 * kLanes <= end) {
+      const std::size_t next = std::size_t(e0 + kLanes);
+      for (std::size_t b = 0; b < kLanes * hsize; b += 8) __builtin_prefetch(&st.history[next * hsize + b]);
+      for (std::size_t b = 0; b < 6 * kLanes; b += 8) __builtin_prefetch(&st.stress[6 * next + b]);
+      if (!st.hourglass.empty())
+        for (std::size_t b = 0; b < 12 * kLanes; b += 8) __builtin_prefetch(&st.hourglass[12 * next + b]);
+    }
     Index elem[kLanes];
     for (int l = 0; l < kLanes; ++l) elem[l] = e0 + std::min(l, n - 1);
 
