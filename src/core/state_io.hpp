@@ -6,6 +6,7 @@
 //                names); a block with a resize callback takes the stored count.
 //   StateDigest  a 64-bit FNV-1a hash of paths, sizes and bytes: two runs in the same state have
 //                the same digest (restart and thread-determinism tests, regression checks).
+//   StateSize    the bytes of all blocks (the memory the run state holds; `check`'s estimate).
 // Raw bytes, native byte order: a restart is read on the machine type that wrote it.
 #pragma once
 
@@ -62,6 +63,17 @@ class StateDigest : public StatePath {
  private:
   void add(const void* data, std::size_t bytes);
   std::uint64_t hash_ = 14695981039346656037ull;  // FNV-1a offset basis
+};
+
+class StateSize : public StatePath {
+ public:
+  void block(std::string_view, std::size_t elem_size, std::size_t count, void*, Resize, void*) override {
+    bytes_ += elem_size * count;
+  }
+  std::size_t bytes() const { return bytes_; }
+
+ private:
+  std::size_t bytes_ = 0;
 };
 
 }  // namespace plyimpact

@@ -71,6 +71,37 @@ TEST(Cli, CheckReportsModelSubsystemsAndStep) {
   fs::remove_all(test_dir());
 }
 
+// check's memory estimate counts the run state, whose largest part on a *MAT_054 model is the
+// material history of every integration point: 29 values per point, so a fully integrated block
+// of 1,600 elements holds 1600 x 8 x 29 x 8 B = 2.97 MB of it against 0.37 MB with one point. The
+// estimate must cover at least history and stresses (3.58 MB; 0.45 MB with one point).
+double estimate_mib(const std::string& elform) {
+  const std::string scene =
+      "units: SI\ncontrol: {termination_time: 1.0e-6}\nmaterials:\n"
+      "  ply: {card: MAT_054, RO: 1550, EA: 157e9, EB: 8.5e9, EC: 8.5e9, PRBA: 0.019, PRCA: 0.019, PRCB: 0.53,"
+      " GAB: 4.2e9, GBC: 2.2e9, GCA: 4.2e9, AOPT: 2, A: [1, 0, 0], D: [0, 1, 0], XT: 2.0e9, XC: 1.2e9,"
+      " YT: 50e6, YC: 200e6, SC: 70e6}\n"
+      "sections:\n  s: " + elform + "\nparts:\n  plate: {material: ply, section: s}\n"
+      "mesh:\n  boxes:\n    - {part: plate, size: [0.04, 0.04, 0.001], elements: [20, 20, 4]}\n";
+  const fs::path path = write_scene("plyimpact_cli_memory.yaml", scene);
+  std::string out, err;
+  EXPECT_EQ(0, run({"check", path.string()}, out, err)) << err;
+  const auto at = out.find("memory estimate: ");
+  EXPECT_NE(at, std::string::npos) << out;
+  return at == std::string::npos ? 0.0 : std::stod(out.substr(at + 17));
+}
+
+TEST(Cli, MemoryEstimateCountsEveryIntegrationPointsHistory) {
+  const double mib = 1048576.0;
+  const double full = estimate_mib("{ELFORM: -2}"), one = estimate_mib("{ELFORM: 1, IHQ: 6, QM: 1}");
+  EXPECT_GE(full, 1600.0 * 8 * (29 + 6) * 8 / mib);
+  EXPECT_GE(one, 1600.0 * (29 + 6) * 8 / mib);
+  // Seven more points per element, less the one-point element's 12 hourglass forces and 6 IHQ 6
+  // moduli per element, less the printed rounding (0.05 MiB each).
+  EXPECT_GE(full - one, 1600.0 * (7 * (29 + 6) - 18) * 8 / mib - 0.1) << "the seven more points per element";
+  fs::remove_all(test_dir());
+}
+
 TEST(Cli, RunWritesSeriesHistoryAndSummary) {
   const fs::path scene = write_scene("plyimpact_cli_good.yaml", kGood);
   const fs::path out_dir = test_dir() / "out";
