@@ -93,18 +93,23 @@ struct PointKinematics {
   alignas(64) double trD_mean[kLanes];
 };
 
-// The points of the B-bar's layers (PointKinematics): all eight, or those with a negative and those
-// with a positive natural coordinate in the thin direction t (layers_of[t]).
+// ELFORM -2: the layer (0, 1) of Gauss point gp, by the sign of its thin natural coordinate.
+inline int layer_of(int gp, int thin) {
+  const double* s[3] = {element::kXi, element::kEta, element::kZeta};
+  return s[thin][gp] > 0 ? 1 : 0;
+}
+
+// The points of the B-bar's layers (PointKinematics): all eight, or (halves[t]) those of layer 0
+// and of layer 1 for the thin direction t.
 struct LayerPoints {
   int all[8];
   int halves[3][2][4];
   LayerPoints() {
-    const double* s[3] = {element::kXi, element::kEta, element::kZeta};
     for (int g = 0; g < 8; ++g) all[g] = g;
     for (int t = 0; t < 3; ++t) {
       int n[2] = {};
       for (int g = 0; g < 8; ++g) {
-        const int side = s[t][g] > 0 ? 1 : 0;
+        const int side = layer_of(g, t);
         halves[t][side][n[side]++] = g;
       }
     }
@@ -113,12 +118,6 @@ struct LayerPoints {
 inline const LayerPoints& layer_points() {
   static const LayerPoints table;
   return table;
-}
-
-// ELFORM -2: the layer (0, 1) of Gauss point gp, by the sign of its thin natural coordinate.
-inline int layer_of(int gp, int thin) {
-  const double* s[3] = {element::kXi, element::kEta, element::kZeta};
-  return s[thin][gp] > 0 ? 1 : 0;
 }
 
 // dN_k/dx_i at Gauss point g (end of step).
