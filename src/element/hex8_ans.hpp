@@ -31,6 +31,13 @@
 
 namespace plyimpact::element {
 
+// The B-bar layer (0 or 1) of Gauss point gp (order of hex8_gauss_gradients): the sign of its
+// natural coordinate in the thin direction t, i.e. its side of the mid-surface.
+inline int ans_layer(int gp, int t) noexcept {
+  const double* s[3] = {kXi, kEta, kZeta};
+  return s[t][gp] > 0 ? 1 : 0;
+}
+
 // rows[g][m][c][k]: at Gauss point g (order of hex8_gauss_gradients), the change of the covariant
 // transverse shear rate m (0: d_at, 1: d_bt, with a = (t + 1) % 3, b = (t + 2) % 3) per unit
 // velocity component c of node k: delta d_m(g) = sum_ck rows[g][m][c][k] v[c][k].

@@ -64,8 +64,7 @@ Eigen::Matrix<double, 24, 24> fully_integrated_stiffness(const std::array<double
   if (thin >= 0) element::hex8_ans_shear_rows(x, thin, ans);
   // B-bar: every point's volumetric strain is the element mean, or for ELFORM -2 the mean of its
   // layer (the four points on its side of the mid-surface; element_hex8_selective.cpp).
-  const double* side[3] = {element::kXi, element::kEta, element::kZeta};
-  const auto layer = [&](int g) { return thin >= 0 && side[thin][g] > 0 ? 1 : 0; };
+  const auto layer = [&](int g) { return thin >= 0 ? element::ans_layer(g, thin) : 0; };
   double V[2] = {}, bbar[2][3][8] = {};
   for (int g = 0; g < 8; ++g) {
     V[layer(g)] += detj[g];

@@ -93,12 +93,6 @@ struct PointKinematics {
   alignas(64) double trD_mean[kLanes];
 };
 
-// ELFORM -2: the layer (0, 1) of Gauss point gp, by the sign of its thin natural coordinate.
-inline int layer_of(int gp, int thin) {
-  const double* s[3] = {element::kXi, element::kEta, element::kZeta};
-  return s[thin][gp] > 0 ? 1 : 0;
-}
-
 // The points of the B-bar's layers (PointKinematics): all eight, or (halves[t]) those of layer 0
 // and of layer 1 for the thin direction t.
 struct LayerPoints {
@@ -109,7 +103,7 @@ struct LayerPoints {
     for (int t = 0; t < 3; ++t) {
       int n[2] = {};
       for (int g = 0; g < 8; ++g) {
-        const int side = layer_of(g, t);
+        const int side = element::ans_layer(g, t);
         halves[t][side][n[side]++] = g;
       }
     }
@@ -241,9 +235,9 @@ int update_points_one_by_one(Material& material, const model::ElementBlock& blk,
     for (int g = 0; g < 8; ++g) {
       double JX[9];
       element::hex8_gauss_jacobian(Xe, g, JX);
-      V0_layer[layer_of(g, thin)] += element::det3(JX);
+      V0_layer[element::ans_layer(g, thin)] += element::det3(JX);
     }
-    for (int g = 0; g < 8; ++g) Jbar_pt[g] = k.V_layer[layer_of(g, thin)] / V0_layer[layer_of(g, thin)];
+    for (int g = 0; g < 8; ++g) Jbar_pt[g] = k.V_layer[element::ans_layer(g, thin)] / V0_layer[element::ans_layer(g, thin)];
   }
   for (int g = 0; g < 8; ++g) {
     const double Jbar = Jbar_pt[g];
