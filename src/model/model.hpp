@@ -93,6 +93,10 @@ struct ElementBlock {
   // with the shortest centre base vector dX/dxi_c at the reference geometry (zeta, then eta, on a
   // tie within 1 %); empty otherwise.
   std::vector<std::uint8_t> thin_axis;
+  // (num_elements, 2) ELFORM -2: the reference volumes of the element's two B-bar layers (the
+  // Gauss points either side of the mid-surface, element::ans_layer), for the F-bar of
+  // total-Lagrangian materials; empty otherwise.
+  std::vector<double> layer_volume0;
   std::size_t size() const { return element_id.size(); }
   bool fully_integrated() const { return elform == 2 || elform == -2; }
   int points() const { return fully_integrated() ? 8 : 1; }

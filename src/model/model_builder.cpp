@@ -4,6 +4,7 @@
 
 #include "core/error.hpp"
 #include "element/hex8.hpp"
+#include "element/hex8_ans.hpp"
 #include "model/material_builder.hpp"
 #include "model/mesh_conversion.hpp"
 #include "model/model.hpp"
@@ -163,7 +164,17 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
                            << " (volume " << volume << " m^3); allowed: valid hexahedra with positive volume "
                            << "(check node order and degenerate elements)");
       block.volume0[e] = volume;
-      if (block.elform == -2) block.thin_axis.push_back(thinnest_natural_direction(x));
+      if (block.elform == -2) {
+        const int thin = thinnest_natural_direction(x);
+        block.thin_axis.push_back(std::uint8_t(thin));
+        double layer_volume[2] = {};
+        for (int g = 0; g < 8; ++g) {
+          double J[9];
+          element::hex8_gauss_jacobian(x, g, J);
+          layer_volume[element::ans_layer(g, thin)] += element::det3(J);
+        }
+        block.layer_volume0.insert(block.layer_volume0.end(), layer_volume, layer_volume + 2);
+      }
       if (mat.kind == MaterialKind::OrthotropicElastic && block.elform == 1) {
         double J[9], Jinv[9];
         element::hex8_centroid_jacobian(x, J);

@@ -226,18 +226,14 @@ int update_points_one_by_one(Material& material, const model::ElementBlock& blk,
                              const double (&ans_strain)[8][2], std::size_t hsize, const LaneVec<6>& s_old,
                              LaneVec<6>& s) {
   int erode_cause = 0;
-  // F-bar's volume ratio: the element's, or (ELFORM -2) the point's layer's, whose reference volume
-  // comes from the reference Jacobians.
+  // F-bar's volume ratio: the element's, or (ELFORM -2) the point's layer's.
   double Jbar_pt[8];
   for (int g = 0; g < 8; ++g) Jbar_pt[g] = k.V / blk.volume0[e];
   if constexpr (kAns && Material::kTotalLagrangian) {
-    double V0_layer[2] = {};
     for (int g = 0; g < 8; ++g) {
-      double JX[9];
-      element::hex8_gauss_jacobian(Xe, g, JX);
-      V0_layer[element::ans_layer(g, thin)] += element::det3(JX);
+      const int layer = element::ans_layer(g, thin);
+      Jbar_pt[g] = k.V_layer[layer] / blk.layer_volume0[2 * std::size_t(e) + layer];
     }
-    for (int g = 0; g < 8; ++g) Jbar_pt[g] = k.V_layer[element::ans_layer(g, thin)] / V0_layer[element::ans_layer(g, thin)];
   }
   for (int g = 0; g < 8; ++g) {
     const double Jbar = Jbar_pt[g];
