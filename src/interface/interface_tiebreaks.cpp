@@ -255,8 +255,11 @@ void InterfaceTiebreaks::apply(const solver::ForceContext& c) {
   // the contributions of one interface only, added in that interface's own fixed order, so the
   // forces do not depend on the thread count (and an interface's own parallel loop, nested here,
   // runs on this iteration's thread). One parallel region for all interfaces instead of one each.
+  // Static, not dynamic: the interfaces are stacked in ply order like the element pass's chunks, so
+  // each thread gets the interfaces inside the plies whose elements it computes, and their nodes'
+  // lines stay in its cache (dynamic handed an interface to either thread, cycle by cycle).
   const long np = long(pairs_.size()), nk = np + long(cohesive_.size());
-#pragma omp parallel for schedule(dynamic) if (across_interfaces_ && nk > 1 && omp_get_max_threads() > 1)
+#pragma omp parallel for schedule(static) if (across_interfaces_ && nk > 1 && omp_get_max_threads() > 1)
   for (long k = 0; k < nk; ++k) {
     if (k < np) pairs_[std::size_t(k)].apply(c.x, c.v, c.f, c.dt);
     else cohesive_[std::size_t(k - np)].apply(c.x, c.v, c.f, c.dt);

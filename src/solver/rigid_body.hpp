@@ -40,9 +40,14 @@ class RigidBodies {
               const std::vector<double>& curve_value, double& work);
 
   // Nodes of a body with at least kParallelMinNodes are placed by all threads when on (the
-  // solver's choice for the model). The resultant stays serial: its sums keep their order.
+  // solver's choice for the model), thread t the range thread_range(nodes, t, threads) of the
+  // body's node list. The resultant stays serial: its sums keep their order.
   static constexpr long kParallelMinNodes = 1024;
   void set_parallel(bool on) { parallel_ = on; }
+  // Threads that place a body of `nodes` nodes when nt are available.
+  static int placing_threads(long nodes, bool parallel, int nt) {
+    return parallel && nodes >= kParallelMinNodes ? nt : 1;
+  }
 
   const std::vector<RigidBodyState>& states() const { return states_; }
   std::vector<RigidBodyState>& states() { return states_; }

@@ -65,7 +65,7 @@ void merge(ChunkResult& total, const ChunkResult& r) {
 }
 }
 
-Solver::Solver(const model::Model& model) : model_(model) {
+Solver::Solver(const model::Model& model) : model_(model), node_owners_(model, kNodeChunk) {
   if (model.control.dt2ms != 0 && !model.mass_scaling.applied)
     throw RunError("control.dt2ms is set but the model's mass was not scaled (solver::apply_mass_scaling)");
   warnings_ = model.mass_scaling.warnings;
@@ -302,14 +302,15 @@ void Solver::step() {
 
   // Node update: v^{n+1/2}, constraints, kinetic energy at t^n, x^{n+1}.
   const std::size_t n = model_.num_nodes();
-  const long num_chunks = long(node_chunk_ke_.size());
   double* __restrict x = s.x.data();
   double* __restrict v = s.v.data();
   double* __restrict f = s.f.data();
   const double* __restrict mass = node_mass_.data();
   const double* __restrict inv_mass = inverse_mass_.data();
-#pragma omp parallel for schedule(static) if (parallel_)
-  for (long chunk = 0; chunk < num_chunks; ++chunk) {
+  const int threads = parallel_ ? omp_get_max_threads() : 1;
+  const auto& owned = node_owners_.for_threads(threads);
+#pragma omp parallel num_threads(threads) if (threads > 1)
+  for (long chunk : owned[std::size_t(omp_get_thread_num())]) {
     const std::size_t begin = std::size_t(chunk) * kNodeChunk, end = std::min(n, begin + kNodeChunk);
     double ke = 0;
     for (std::size_t i = begin; i < end; ++i) {
@@ -444,9 +445,8 @@ void Solver::element_pass(double dt) {
   // only for lower colours, which their owners reach first.
 #pragma omp parallel num_threads(threads)
   {
-    const int t = omp_get_thread_num(), nt = omp_get_num_threads();
-    const int num_chunks = int(schedule.chunks.size());
-    const int lo = int(std::int64_t(num_chunks) * t / nt), hi = int(std::int64_t(num_chunks) * (t + 1) / nt);
+    const ThreadRange mine = thread_range(long(schedule.chunks.size()), omp_get_thread_num(), omp_get_num_threads());
+    const int lo = int(mine.begin), hi = int(mine.end);
     for (const auto& color : schedule.colors) {
       auto it = std::lower_bound(color.begin(), color.end(), lo);
       for (; it != color.end() && *it < hi; ++it) {

@@ -19,6 +19,7 @@
 #include "model/model.hpp"
 #include "solver/element_update.hpp"
 #include "solver/force_contributor.hpp"
+#include "solver/node_chunk_owners.hpp"
 #include "solver/penalty_contacts.hpp"
 #include "solver/rigid_body.hpp"
 #include "solver/rigid_walls.hpp"
@@ -130,6 +131,7 @@ class Solver {
   std::vector<double> node_mass_;          // (num_nodes) lumped mass, 0 at rigid-body nodes (their body moves them)
   std::vector<int> node_body_;             // (num_nodes) rigid body index, -1
   std::vector<Index> rigid_nodes_;         // nodes of the rigid bodies (their force outlives the node update)
+  NodeChunkOwners node_owners_;            // which thread updates which node chunk
   std::unique_ptr<RigidBodies> rigid_;     // null without rigid bodies
   std::vector<std::unique_ptr<ForceContributor>> contributors_;
   const PenaltyContacts* contacts_ = nullptr;  // views into contributors_ (null when absent)

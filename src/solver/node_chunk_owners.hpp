@@ -1,0 +1,38 @@
+// Which thread updates which chunk of nodes in the node update. A node's force is scattered by the
+// thread that computes its elements (the element pass gives thread t a contiguous range of element
+// chunks, thread_range); if another thread then reads that force and writes the velocity
+// and position, every cache line of f, v and x crosses between cores twice per cycle, and on the
+// default scene the node update took longer on two threads than on one. So each node chunk goes to
+// the thread whose element chunks touch most of its nodes, and a rigid body's nodes to the
+// thread that places them (RigidBodies::placing_threads). The kinetic energy is still
+// summed per chunk and then in chunk order, so the results do not depend on the thread count.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/types.hpp"
+#include "model/model.hpp"
+#include "solver/thread_range.hpp"
+
+namespace plyimpact::solver {
+
+class NodeChunkOwners {
+ public:
+  // chunk_nodes: nodes per node chunk.
+  NodeChunkOwners(const model::Model& model, std::size_t chunk_nodes);
+
+  // Per thread of nt, the node chunks it updates, in increasing order (rebuilt when nt changes;
+  // call outside the parallel region).
+  const std::vector<std::vector<long>>& for_threads(int nt);
+
+ private:
+  void build(int nt);
+
+  const model::Model& model_;
+  std::size_t chunk_nodes_;
+  int threads_ = 0;                       // nt of the current table
+  std::vector<std::vector<long>> chunks_;  // (nt) node chunks per thread
+};
+
+}  // namespace plyimpact::solver
