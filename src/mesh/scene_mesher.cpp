@@ -10,6 +10,7 @@
 #include "mesh/impactor_mesher.hpp"
 #include "mesh/laminate_mesher.hpp"
 #include "mesh/msh_reader.hpp"
+#include "mesh/node_order.hpp"
 #include "mesh/size_estimate.hpp"
 
 namespace plyimpact::mesh {
@@ -40,7 +41,10 @@ Mesh mesh_scene(const config::Scene& scene) {
   require_mesh_fits(scene, estimate, physical_memory_bytes());
   Mesh m;
   if (scene.mesh_file) m = read_msh(scene);
-  else if (scene.laminate) with_key(scene, "laminate.element_size", estimate, [&] { m = mesh_laminate(scene); });
+  else if (scene.laminate) {
+    with_key(scene, "laminate.element_size", estimate, [&] { m = mesh_laminate(scene); });
+    number_nodes_in_element_order(m);
+  }
   else m = mesh_boxes(scene);
   if (scene.impactor) with_key(scene, "impactor.element_size", estimate, [&] { add_impactor(scene, m); });
   return m;

@@ -234,3 +234,66 @@ TEST(LaminateMesher, GroupedPliesShareAPart) {
   EXPECT_EQ(m.element_part[0], 0);
   EXPECT_EQ(m.element_ply[4], 1);  // second ply of the first block
 }
+
+// mesh_scene renumbers a laminate's nodes in the order its plies' elements first use them
+// (mesh/node_order): the mesh must be the same mesh (every element's corners, every interface
+// pair and segment, every node set at the same coordinates), and the nodes each ply brings must be
+// one range following the previous ply's.
+TEST(NodeOrder, RenumberedLaminateIsTheSameMeshWithEachPlysNodesContiguous) {
+  const config::Scene scene = load(R"(  length: 20
+  width: 10
+  ply_thickness: 0.25
+  stacking: "[0/90]s"
+  element_size: 2
+  interfaces: angle-change
+  supports:
+    win: {window: [16, 6]}
+)");
+  const mesh::Mesh before = mesh::mesh_laminate(scene);
+  const mesh::Mesh after = mesh::mesh_scene(scene);
+  ASSERT_EQ(after.num_nodes(), before.num_nodes());
+  ASSERT_EQ(after.hex.size(), before.hex.size());
+  ASSERT_FALSE(before.interfaces.empty());
+  auto same_point = [&](Index a, Index b) {
+    for (int i = 0; i < 3; ++i)
+      if (before.coords[3 * std::size_t(a) + i] != after.coords[3 * std::size_t(b) + i]) return false;
+    return true;
+  };
+  auto same_points = [&](const std::vector<Index>& a, const std::vector<Index>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+      if (!same_point(a[k], b[k])) return false;
+    return true;
+  };
+  EXPECT_TRUE(same_points(before.hex, after.hex));
+  ASSERT_EQ(after.interfaces.size(), before.interfaces.size());
+  for (std::size_t i = 0; i < before.interfaces.size(); ++i) {
+    EXPECT_TRUE(same_points(before.interfaces[i].lower_nodes, after.interfaces[i].lower_nodes));
+    EXPECT_TRUE(same_points(before.interfaces[i].upper_nodes, after.interfaces[i].upper_nodes));
+    EXPECT_TRUE(same_points(before.interfaces[i].lower_segments, after.interfaces[i].lower_segments));
+    EXPECT_TRUE(same_points(before.interfaces[i].upper_segments, after.interfaces[i].upper_segments));
+  }
+  ASSERT_EQ(after.node_sets.size(), before.node_sets.size());
+  for (std::size_t s = 0; s < before.node_sets.size(); ++s)
+    EXPECT_TRUE(same_points(before.node_sets[s].nodes, after.node_sets[s].nodes)) << before.node_sets[s].name;
+  // A permutation: every new index used once.
+  std::set<Index> used(after.hex.begin(), after.hex.end());
+  EXPECT_EQ(used.size(), after.num_nodes());
+  // Part by part, the nodes a part uses first are exactly the next range of indices.
+  Index next = 0;
+  std::set<Index> seen;
+  const int parts = *std::max_element(after.element_part.begin(), after.element_part.end()) + 1;
+  for (int p = 0; p < parts; ++p) {
+    std::set<Index> brought;
+    for (std::size_t e = 0; e < after.num_elements(); ++e)
+      if (after.element_part[e] == p)
+        for (int k = 0; k < 8; ++k)
+          if (!seen.count(after.hex[8 * e + k])) brought.insert(after.hex[8 * e + k]);
+    if (brought.empty()) continue;
+    EXPECT_EQ(*brought.begin(), next) << "part " << p;
+    EXPECT_EQ(*brought.rbegin(), next + Index(brought.size()) - 1) << "part " << p;
+    next += Index(brought.size());
+    seen.insert(brought.begin(), brought.end());
+  }
+  EXPECT_EQ(std::size_t(next), after.num_nodes());
+}
