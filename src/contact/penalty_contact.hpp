@@ -117,6 +117,9 @@ class PenaltyContact {
   // Nodes that can carry a contact force and their last forces (num, 3) — for rigid-body output.
   const std::vector<Index>& force_nodes() const { return set_.force_nodes(); }
   const std::vector<double>& node_forces() const { return fc_; }
+  // The force nodes with a force in the last pass, ascending: every other entry of node_forces()
+  // is zero.
+  const std::vector<Index>& loaded_force_nodes() const { return touched_; }
   std::size_t num_segments() const { return set_.num_segments(); }
   // For check's compliance estimate (contact_compliance).
   const model::Contact& definition() const { return def_; }

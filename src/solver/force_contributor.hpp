@@ -53,6 +53,9 @@ struct EnergyName {
 struct NodeForces {
   const std::vector<Index>* nodes = nullptr;
   const std::vector<double>* forces = nullptr;
+  // Optional: the entries (ascending) outside which every force is zero, so a sum need not visit
+  // the others (skipping a zero leaves a sum's bits as they are).
+  const std::vector<Index>* loaded = nullptr;
 };
 
 class ForceContributor {

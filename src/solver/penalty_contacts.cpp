@@ -111,7 +111,7 @@ void PenaltyContacts::on_erosion(const AliveMask& alive, const std::vector<doubl
 }
 
 void PenaltyContacts::node_forces(std::vector<NodeForces>& out) const {
-  for (const auto& c : contacts_) out.push_back({&c.force_nodes(), &c.node_forces()});
+  for (const auto& c : contacts_) out.push_back({&c.force_nodes(), &c.node_forces(), &c.loaded_force_nodes()});
 }
 
 std::vector<std::string> PenaltyContacts::history_columns() const {
