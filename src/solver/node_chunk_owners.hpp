@@ -1,8 +1,8 @@
 // Which thread updates which chunk of nodes in the node update. A node's force is scattered by the
 // thread that computes its elements (the element pass gives thread t a contiguous range of element
 // chunks, thread_range); if another thread then reads that force and writes the velocity
-// and position, every cache line of f, v and x crosses between cores twice per cycle, and on the
-// default scene the node update took longer on two threads than on one. So each node chunk goes to
+// and position, every cache line of f, v and x crosses between cores twice per cycle, which can
+// make the node update slower on two threads than on one. So each node chunk goes to
 // the thread whose element chunks touch most of its nodes, and a rigid body's nodes to the
 // thread that places them (RigidBodies::placing_threads). The kinetic energy is still
 // summed per chunk and then in chunk order, so the results do not depend on the thread count.
