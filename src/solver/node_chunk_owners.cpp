@@ -10,11 +10,13 @@ NodeChunkOwners::NodeChunkOwners(const model::Model& model, std::size_t chunk_no
     : model_(model), chunk_nodes_(chunk_nodes) {}
 
 const std::vector<std::vector<long>>& NodeChunkOwners::for_threads(int nt) {
-  if (nt != threads_) build(nt);
-  return chunks_;
+  if (tables_.size() <= std::size_t(nt)) tables_.resize(std::size_t(nt) + 1);
+  Table& table = tables_[std::size_t(nt)];
+  if (table.empty()) table = build(nt);
+  return table;
 }
 
-void NodeChunkOwners::build(int nt) {
+NodeChunkOwners::Table NodeChunkOwners::build(int nt) const {
   const std::size_t n = model_.num_nodes();
   const std::size_t num_node_chunks = (n + chunk_nodes_ - 1) / chunk_nodes_;
   // votes[chunk * nt + t]: element-node incidences of thread t's element chunks in this node chunk.
@@ -39,13 +41,13 @@ void NodeChunkOwners::build(int nt) {
         ++votes[std::size_t(body.nodes[std::size_t(k)]) / chunk_nodes_ * std::size_t(nt) + std::size_t(t)];
     }
   }
-  chunks_.assign(std::size_t(nt), {});
+  Table chunks(static_cast<std::size_t>(nt));
   for (std::size_t c = 0; c < num_node_chunks; ++c) {
     const auto first = votes.begin() + std::ptrdiff_t(c * std::size_t(nt));
     const auto owner = std::max_element(first, first + nt) - first;  // ties and no votes: the lowest thread
-    chunks_[std::size_t(owner)].push_back(long(c));
+    chunks[std::size_t(owner)].push_back(long(c));
   }
-  threads_ = nt;
+  return chunks;
 }
 
 }  // namespace plyimpact::solver

@@ -22,17 +22,18 @@ class NodeChunkOwners {
   // chunk_nodes: nodes per node chunk.
   NodeChunkOwners(const model::Model& model, std::size_t chunk_nodes);
 
-  // Per thread of nt, the node chunks it updates, in increasing order (rebuilt when nt changes;
-  // call outside the parallel region).
+  // Per thread of nt, the node chunks it updates, in increasing order (built on first use of nt and
+  // kept, so a run that switches thread counts allocates nothing afterwards; call outside the
+  // parallel region).
   const std::vector<std::vector<long>>& for_threads(int nt);
 
  private:
-  void build(int nt);
+  using Table = std::vector<std::vector<long>>;  // (nt) node chunks per thread
+  Table build(int nt) const;
 
   const model::Model& model_;
   std::size_t chunk_nodes_;
-  int threads_ = 0;                       // nt of the current table
-  std::vector<std::vector<long>> chunks_;  // (nt) node chunks per thread
+  std::vector<Table> tables_;  // index nt: the table for nt threads (empty until used)
 };
 
 }  // namespace plyimpact::solver

@@ -58,7 +58,7 @@ TEST(NodeChunkOwners, EveryChunkOnceInIncreasingOrderForAnyThreadCount) {
   const model::Model model = body_and_two_plates();
   solver::NodeChunkOwners owners(model, 1024);
   const long chunks = long((model.num_nodes() + 1023) / 1024);
-  for (int nt : {1, 2, 3, 2}) {  // back to 2: the table is rebuilt when the count changes
+  for (int nt : {1, 2, 3, 2}) {  // back to 2: the kept table
     const auto& table = owners.for_threads(nt);
     ASSERT_EQ(int(table.size()), nt);
     std::set<long> seen;
