@@ -3,15 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <omp.h>
+#include "contact/parallel_items.hpp"
 
 namespace plyimpact::contact {
-
-namespace {
-// Below this many items a loop of the search runs on one thread (a parallel region costs a few us).
-constexpr std::size_t kParallelMinItems = 2048;
-bool parallel_for(std::size_t items) { return items >= kParallelMinItems && omp_get_max_threads() > 1; }
-}  // namespace
 
 void SegmentSearch::reset(const SegmentSet& set, const double* x) {
   // Each segment's box is expanded by its own margin: release depth (the deepest accepted
@@ -21,7 +15,10 @@ void SegmentSearch::reset(const SegmentSet& set, const double* x) {
   // listed in every bucket its box overlaps.
   const std::size_t S = set.num_segments();
   std::vector<double> extent(S, 0.0);
-  for (std::size_t s = 0; s < S; ++s) {
+  const long n_segments = long(S);
+#pragma omp parallel for schedule(static) if (parallel_items(S))
+  for (long i = 0; i < n_segments; ++i) {
+    const std::size_t s = std::size_t(i);
     const Index* q = set.segment_nodes(s);
     for (int a = 0; a < 4; ++a)
       for (int b = a + 1; b < 4; ++b) {
@@ -62,7 +59,7 @@ PassMotion SegmentSearch::begin_pass(const SegmentSet& set, const double* x, con
   const std::vector<Index>& nodes = set.force_nodes();
   const long U = long(nodes.size());
   double moved2 = 0, v_max2 = 0;  // maxima: exact, whatever the order
-#pragma omp parallel for schedule(static) reduction(max : moved2, v_max2) if (parallel_for(nodes.size()))
+#pragma omp parallel for schedule(static) reduction(max : moved2, v_max2) if (parallel_items(nodes.size()))
   for (long u = 0; u < U; ++u) {
     const std::size_t node = std::size_t(nodes[std::size_t(u)]);
     const double* p = &x[3 * node];
@@ -97,7 +94,7 @@ void SegmentSearch::sort(const SegmentSet& set, const double* x, double step_dep
   }
   const std::vector<Index>& nodes = set.force_nodes();
   const long U = long(nodes.size());
-#pragma omp parallel for schedule(static) if (parallel_for(nodes.size()))
+#pragma omp parallel for schedule(static) if (parallel_items(nodes.size()))
   for (long u = 0; u < U; ++u)
     for (int d = 0; d < 3; ++d) x_sort_[3 * std::size_t(u) + d] = x[3 * std::size_t(nodes[std::size_t(u)]) + d];
   cycles_since_sort_ = 0;
@@ -112,7 +109,7 @@ void SegmentSearch::querying_node_boxes(const SegmentSet& set, const double* x, 
   const std::size_t N = set.num_nodes();
   for (int side = 0; side < (set.single() ? 1 : 2); ++side) {
     double lo0 = 1e300, lo1 = 1e300, lo2 = 1e300, hi0 = -1e300, hi1 = -1e300, hi2 = -1e300;  // exact in any order
-#pragma omp parallel for schedule(static) if (parallel_for(N)) reduction(min : lo0, lo1, lo2) \
+#pragma omp parallel for schedule(static) if (parallel_items(N)) reduction(min : lo0, lo1, lo2) \
     reduction(max : hi0, hi1, hi2)
     for (long il = 0; il < long(N); ++il) {
       const std::size_t i = std::size_t(il);
@@ -140,7 +137,7 @@ void SegmentSearch::segment_boxes(const SegmentSet& set, int side, const double*
   keep.resize(ids.size());
   const double r_factor = 1 + 2 * std::max(options_.MAXPAR - 1, 0.0), half_a = 0.5 * list_allowance_;
   const long J = long(ids.size());
-#pragma omp parallel for schedule(static) if (parallel_for(ids.size()))
+#pragma omp parallel for schedule(static) if (parallel_items(ids.size()))
   for (long jl = 0; jl < J; ++jl) {
     const std::size_t j = std::size_t(jl), s = std::size_t(ids[j]);
     const Index* q = set.segment_nodes(s);
@@ -172,7 +169,7 @@ void SegmentSearch::refresh_listed(const SegmentSet& set, const double* x) {
     const auto& ids = side_segs_[side];
     const auto& keep = keep_[side];
     const long J = long(ids.size());
-#pragma omp parallel for schedule(static) if (parallel_for(ids.size()))
+#pragma omp parallel for schedule(static) if (parallel_items(ids.size()))
     for (long j = 0; j < J; ++j)
       if (keep[std::size_t(j)]) refresh_segment(set, std::size_t(ids[std::size_t(j)]), x);
   }
@@ -199,7 +196,7 @@ void SegmentSearch::build_candidates(const SegmentSet& set, const double* x, boo
   const long chunks = long((N + kListChunk - 1) / kListChunk);
   cand_start_.resize(N + 1);
   if (chunk_cand_.size() < std::size_t(chunks)) chunk_cand_.resize(std::size_t(chunks));
-#pragma omp parallel for schedule(dynamic) if (parallel_for(N))
+#pragma omp parallel for schedule(dynamic) if (parallel_items(N))
   for (long c = 0; c < chunks; ++c) {
     std::vector<Index>& out = chunk_cand_[std::size_t(c)];
     out.clear();
@@ -304,7 +301,7 @@ void SegmentSearch::refresh_claimed(const SegmentSet& set, std::size_t s, const 
 void SegmentSearch::refresh_all(const SegmentSet& set, const double* x) {
   // Each record and node normal is written by one iteration: no claiming needed.
   const long S = long(set.num_segments()), N = long(set.num_nodes());
-#pragma omp parallel if (parallel_for(std::size_t(S + N)))
+#pragma omp parallel if (parallel_items(std::size_t(S + N)))
   {
 #pragma omp for schedule(static)
     for (long s = 0; s < S; ++s) refresh_segment(set, std::size_t(s), x);

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "contact/geometry.hpp"
+#include "contact/parallel_items.hpp"
 
 namespace plyimpact::contact {
 
@@ -46,41 +47,61 @@ SegmentSet::SegmentSet(const model::Model& model, SegmentSetSpec spec, const std
     for (Index n : body.nodes) node_rigid_[n] = 1;
   force_of_model_.assign(model.num_nodes(), -1);
   assemble(x, nullptr, nullptr);
+  build_neighbours();
 }
 
-std::array<Index, 5> SegmentSet::segment_key(long s) const {
-  std::array<Index, 5> key{-1, -1, -1, -1, -1};
-  if (s < 0) return key;
-  key[0] = Index(seg_side_[std::size_t(s)]);
-  for (int k = 0; k < 4; ++k) key[std::size_t(k) + 1] = seg_nodes_[4 * std::size_t(s) + std::size_t(k)];
+namespace {
+// Identity of segment s of a set (its nodes (S, 4) and sides): side and sorted nodes.
+std::array<Index, 5> key_of(const std::vector<Index>& seg_nodes, const std::vector<char>& seg_side, std::size_t s) {
+  std::array<Index, 5> key{Index(seg_side[s]), seg_nodes[4 * s], seg_nodes[4 * s + 1], seg_nodes[4 * s + 2],
+                           seg_nodes[4 * s + 3]};
   std::sort(key.begin() + 1, key.end());
   return key;
+}
+}  // namespace
+
+std::array<Index, 5> SegmentSet::segment_key(long s) const {
+  if (s < 0) return {-1, -1, -1, -1, -1};
+  return key_of(seg_nodes_, seg_side_, std::size_t(s));
 }
 
 SegmentSetRemap SegmentSet::rebuild(const AliveMask& alive, const std::vector<double>& x) {
   // The old identities: contact nodes by model node and side, segments by key, force nodes by node.
-  const SegmentSet old = *this;
+  Identities& old = previous_;
+  old.node_id.swap(node_id_);
+  old.node_side.swap(node_side_);
+  old.node_k.swap(node_k_);
+  old.seg_nodes.swap(seg_nodes_);
+  old.seg_side.swap(seg_side_);
+  old.force_nodes.assign(force_nodes_.begin(), force_nodes_.end());  // build_force_nodes clears their map
+  old.nbr_start.swap(nbr_start_);
+  old.nbr.swap(nbr_);
+  const std::size_t old_nodes = old.node_id.size(), old_segments = old.seg_side.size();
   assemble(x, &alive, &old);
   SegmentSetRemap r;
   const std::size_t N = num_nodes(), S = num_segments(), n_model = model_->num_nodes();
   std::vector<Index> node_of(2 * n_model, -1);
   for (std::size_t i = 0; i < N; ++i) node_of[2 * std::size_t(node_id_[i]) + node_side_[i]] = Index(i);
-  r.node.resize(old.num_nodes());
-  for (std::size_t i = 0; i < old.num_nodes(); ++i)
-    r.node[i] = node_of[2 * std::size_t(old.node_id_[i]) + old.node_side_[i]];
+  r.node.resize(old_nodes);
+  for (std::size_t i = 0; i < old_nodes; ++i) r.node[i] = node_of[2 * std::size_t(old.node_id[i]) + old.node_side[i]];
   // Each old segment's new index: the first new segment with its key. The new segments are listed
   // by their smallest node (CSR, ascending), so a lookup compares a few keys. Neither a map nor a
   // sort: a rebuild runs at every cycle that erodes an element, over all ~19,000 segments of the
   // default scene.
   std::vector<std::array<Index, 5>> key(S);
+  const bool parallel = parallel_items(std::max(S, old_segments));
+#pragma omp parallel for schedule(static) if (parallel)
+  for (long s = 0; s < long(S); ++s) key[std::size_t(s)] = segment_key(s);
   std::vector<Index> start(n_model + 1, 0);
-  for (std::size_t s = 0; s < S; ++s) ++start[std::size_t((key[s] = segment_key(long(s)))[1]) + 1];
+  for (std::size_t s = 0; s < S; ++s) ++start[std::size_t(key[s][1]) + 1];
   for (std::size_t n = 0; n < n_model; ++n) start[n + 1] += start[n];
   std::vector<Index> by_node(S), fill(start.begin(), start.end() - 1);
   for (std::size_t s = 0; s < S; ++s) by_node[std::size_t(fill[std::size_t(key[s][1])]++)] = Index(s);
-  r.segment.resize(old.num_segments());
-  for (std::size_t s = 0; s < old.num_segments(); ++s) {
-    const std::array<Index, 5> k = old.segment_key(long(s));
+  r.segment.resize(old_segments);
+#pragma omp parallel for schedule(static) if (parallel)
+  for (long i = 0; i < long(old_segments); ++i) {
+    const std::size_t s = std::size_t(i);
+    const std::array<Index, 5> k = key_of(old.seg_nodes, old.seg_side, s);
     r.segment[s] = -1;
     for (Index j = start[std::size_t(k[1])]; j < start[std::size_t(k[1]) + 1]; ++j)
       if (key[std::size_t(by_node[std::size_t(j)])] == k) {
@@ -88,12 +109,12 @@ SegmentSetRemap SegmentSet::rebuild(const AliveMask& alive, const std::vector<do
         break;
       }
   }
-  r.force_node.resize(old.force_nodes_.size());
-  for (std::size_t u = 0; u < old.force_nodes_.size(); ++u) r.force_node[u] = force_of_model_[old.force_nodes_[u]];
+  r.force_node.resize(old.force_nodes.size());
+  for (std::size_t u = 0; u < old.force_nodes.size(); ++u) r.force_node[u] = force_of_model_[old.force_nodes[u]];
   // What the rebuild added (nothing when there was no surface before).
   r.new_node.assign(N, 0);
   r.new_segment.assign(S, 0);
-  if (old.num_nodes() > 0) {
+  if (old_nodes > 0) {
     std::vector<char> known(N, 0), kept(S, 0);
     for (Index i : r.node)
       if (i >= 0) known[std::size_t(i)] = 1;
@@ -102,10 +123,11 @@ SegmentSetRemap SegmentSet::rebuild(const AliveMask& alive, const std::vector<do
     for (std::size_t i = 0; i < N; ++i) r.new_node[i] = !known[i];
     for (std::size_t s = 0; s < S; ++s) r.new_segment[s] = !kept[s];
   }
+  build_neighbours(&old, &r);
   return r;
 }
 
-void SegmentSet::assemble(const std::vector<double>& x, const AliveMask* alive, const SegmentSet* old) {
+void SegmentSet::assemble(const std::vector<double>& x, const AliveMask* alive, const Identities* old) {
   seg_nodes_.clear();
   seg_owner_.clear();
   seg_side_.clear();
@@ -118,49 +140,65 @@ void SegmentSet::assemble(const std::vector<double>& x, const AliveMask* alive, 
   collect_nodes(old);
   build_own_segments();
   build_force_nodes();
-  build_neighbours();
 }
 
-void SegmentSet::add_segment(const Index* q, const Index* owner, int side, double K, double volume,
+void SegmentSet::set_segment(std::size_t s, const Index* q, const Index* owner, int side, double K, double volume,
                              double elem_mass, const std::vector<double>& x) {
   double xq[12];
   for (int k = 0; k < 4; ++k)
     for (int d = 0; d < 3; ++d) xq[3 * k + d] = x[3 * std::size_t(q[k]) + d];
   const double area = quad_area(xq);
   const double sf = spec_.stiffness_scale[side];
-  seg_nodes_.insert(seg_nodes_.end(), q, q + 4);
-  for (int k = 0; k < 8; ++k) seg_owner_.push_back(owner ? owner[k] : -1);
-  seg_side_.push_back(char(side));
-  seg_k_.push_back(K > 0 && volume > 0 ? sf * K * area * area / volume : kInf);  // PENOPT 1
-  seg_mass_.push_back(elem_mass > 0 ? 0.5 * elem_mass : 0.0);
+  std::copy_n(q, 4, &seg_nodes_[4 * s]);
+  for (int k = 0; k < 8; ++k) seg_owner_[8 * s + std::size_t(k)] = owner ? owner[k] : -1;
+  seg_side_[s] = char(side);
+  seg_k_[s] = K > 0 && volume > 0 ? sf * K * area * area / volume : kInf;  // PENOPT 1
+  seg_mass_[s] = elem_mass > 0 ? 0.5 * elem_mass : 0.0;
   double m = 0;
   for (int k = 0; k < 4; ++k) m += 0.25 * model_->mass[q[k]];
-  seg_node_mass_.push_back(m);
-  seg_depth_.push_back(spec_.PENMAX > 0 ? spec_.PENMAX : default_release_depth(volume, area));
+  seg_node_mass_[s] = m;
+  seg_depth_[s] = spec_.PENMAX > 0 ? spec_.PENMAX : default_release_depth(volume, area);
+}
+
+void SegmentSet::resize_segments(std::size_t S) {
+  seg_nodes_.resize(4 * S);
+  seg_owner_.resize(8 * S);
+  seg_side_.resize(S);
+  seg_k_.resize(S);
+  seg_mass_.resize(S);
+  seg_node_mass_.resize(S);
+  seg_depth_.resize(S);
 }
 
 void SegmentSet::add_side(int side, const SurfaceBuilder& builder, const AliveMask* alive,
                           const std::vector<double>& x) {
   const model::Model& model = *model_;
-  for (const auto& f : builder.exterior(alive)) {
+  const std::vector<SurfaceBuilder::Face> faces = builder.exterior(alive);
+  const std::size_t base = num_segments(), nf = faces.size();
+  const std::size_t nq = spec_.impactor[side] ? model.impactor_quads.size() / 4 : 0;
+  resize_segments(base + nf + nq);
+  // Each segment's data depend on its face alone: filled in parallel, the same for any thread count.
+  // A rebuild (every eroding cycle) recomputes them all, as the areas are those at x.
+  const long n = long(nf);
+#pragma omp parallel for schedule(static) if (parallel_items(nf))
+  for (long i = 0; i < n; ++i) {
+    const auto& f = faces[std::size_t(i)];
     const auto& blk = model.blocks[f.block];
     const auto& mat = model.materials[blk.material];
     const Index* conn = &blk.conn[8 * std::size_t(f.element)];
     Index q[4];
     for (int k = 0; k < 4; ++k) q[k] = conn[kHexFaces[f.face][k]];
     const double volume = blk.volume0[f.element];
-    add_segment(q, conn, side, mat.bulk_modulus, volume, mat.density * volume, x);
+    set_segment(base + std::size_t(i), q, conn, side, mat.bulk_modulus, volume, mat.density * volume, x);
   }
-  if (spec_.impactor[side]) {
-    // No element behind the impactor's surface: infinite PENOPT 1 stiffness (the node's decides),
-    // an equal share of the impactor's mass.
-    const std::size_t nq = model.impactor_quads.size() / 4;
-    const double m = model.impactor ? model.impactor->mass / double(std::max<std::size_t>(nq, 1)) : 0.0;
-    for (std::size_t s = 0; s < nq; ++s) add_segment(&model.impactor_quads[4 * s], nullptr, side, 0.0, 0.0, 2 * m, x);
-  }
+  // No element behind the impactor's surface: infinite PENOPT 1 stiffness (the node's decides), an
+  // equal share of the impactor's mass.
+  const double m = model.impactor ? model.impactor->mass / double(std::max<std::size_t>(nq, 1)) : 0.0;
+  for (std::size_t s = 0; s < nq; ++s)
+    set_segment(base + nf + s, &model.impactor_quads[4 * s], nullptr, side, 0.0, 0.0, 2 * m, x);
 }
 
-void SegmentSet::collect_nodes(const SegmentSet* old) {
+void SegmentSet::collect_nodes(const Identities* old) {
   // The segment nodes of each side, by model node then side; node stiffness and segment mass are
   // the means over the node's segments of that side.
   const model::Model& model = *model_;
@@ -190,13 +228,13 @@ void SegmentSet::collect_nodes(const SegmentSet* old) {
       node_seg_mass_.push_back(segm_sum[key] / k_count[key]);
     }
   if (spec_.keep_orphans && old)
-    for (std::size_t i = 0; i < old->num_nodes(); ++i) {
-      const Index n = old->node_id_[i];
+    for (std::size_t i = 0; i < old->node_id.size(); ++i) {
+      const Index n = old->node_id[i];
       if (k_count[2 * std::size_t(n)] == 0 && k_count[2 * std::size_t(n) + 1] == 0 && model.mass[n] > 0) {
         // Orphan node kept as a contact mass point, on the side it belonged to.
         node_id_.push_back(n);
-        node_side_.push_back(char(spec_.single ? 0 : old->node_side_[i]));
-        node_k_.push_back(old->node_k_[i]);
+        node_side_.push_back(char(spec_.single ? 0 : old->node_side[i]));
+        node_k_.push_back(old->node_k[i]);
         node_mass_.push_back(model.mass[n]);
         node_seg_mass_.push_back(model.mass[n]);
       }
@@ -251,7 +289,7 @@ void SegmentSet::build_force_nodes() {
   }
 }
 
-void SegmentSet::build_neighbours() {
+void SegmentSet::build_neighbours(const Identities* old, const SegmentSetRemap* remap) {
   // Segments of the same side sharing a node with s (CSR, ascending, s itself left out).
   // The segments of each model node as CSR, ascending (one allocation, not one per node: this runs
   // at every rebuild).
@@ -263,20 +301,49 @@ void SegmentSet::build_neighbours() {
   std::vector<Index> fill(start.begin(), start.end() - 1);
   for (std::size_t s = 0; s < S; ++s)
     for (int k = 0; k < 4; ++k) of_node[std::size_t(fill[std::size_t(seg_nodes_[4 * s + std::size_t(k)])]++)] = Index(s);
+  // After a rebuild, a segment none of whose nodes lost or gained a segment has the neighbours it
+  // had, renumbered. The survivors keep their order (both sets list the exterior faces in the
+  // builders' fixed face order), so the renumbered lists stay ascending. Searching every segment's
+  // nodes instead was a third of a rebuild, and a rebuild runs at every eroding cycle.
+  std::vector<Index> old_of;
+  std::vector<char> changed;
+  if (old && remap) {
+    old_of.assign(S, -1);
+    changed.assign(n_model, 0);
+    for (std::size_t o = 0; o < remap->segment.size(); ++o) {
+      if (const long t = remap->segment[o]; t >= 0) {
+        old_of[std::size_t(t)] = Index(o);
+        continue;
+      }
+      for (int k = 0; k < 4; ++k) changed[std::size_t(old->seg_nodes[4 * o + std::size_t(k)])] = 1;
+    }
+    for (std::size_t s = 0; s < S; ++s)
+      if (old_of[s] < 0)
+        for (int k = 0; k < 4; ++k) changed[std::size_t(seg_nodes_[4 * s + std::size_t(k)])] = 1;
+  }
   nbr_start_.assign(S + 1, 0);
   nbr_.clear();
   std::vector<Index> near;
   for (std::size_t s = 0; s < S; ++s) {
-    near.clear();
-    for (int k = 0; k < 4; ++k) {
-      const std::size_t n = std::size_t(seg_nodes_[4 * s + std::size_t(k)]);
-      for (Index j = start[n]; j < start[n + 1]; ++j)
-        if (const Index t = of_node[std::size_t(j)]; t != Index(s) && seg_side_[std::size_t(t)] == seg_side_[s])
-          near.push_back(t);
+    const Index* q = &seg_nodes_[4 * s];
+    const bool carried = !old_of.empty() && old_of[s] >= 0 && !changed[std::size_t(q[0])] &&
+                         !changed[std::size_t(q[1])] && !changed[std::size_t(q[2])] && !changed[std::size_t(q[3])];
+    if (carried) {
+      const std::size_t o = std::size_t(old_of[s]);
+      for (Index j = old->nbr_start[o]; j < old->nbr_start[o + 1]; ++j)
+        nbr_.push_back(Index(remap->segment[std::size_t(old->nbr[std::size_t(j)])]));
+    } else {
+      near.clear();
+      for (int k = 0; k < 4; ++k) {
+        const std::size_t n = std::size_t(q[k]);
+        for (Index j = start[n]; j < start[n + 1]; ++j)
+          if (const Index t = of_node[std::size_t(j)]; t != Index(s) && seg_side_[std::size_t(t)] == seg_side_[s])
+            near.push_back(t);
+      }
+      std::sort(near.begin(), near.end());
+      near.erase(std::unique(near.begin(), near.end()), near.end());
+      nbr_.insert(nbr_.end(), near.begin(), near.end());
     }
-    std::sort(near.begin(), near.end());
-    near.erase(std::unique(near.begin(), near.end()), near.end());
-    nbr_.insert(nbr_.end(), near.begin(), near.end());
     nbr_start_[s + 1] = Index(nbr_.size());
   }
 }

@@ -106,13 +106,30 @@ class SegmentSet {
   void visit_state(StateVisitor& visitor);
 
  private:
-  void assemble(const std::vector<double>& x, const AliveMask* alive, const SegmentSet* old);
-  void add_segment(const Index* q, const Index* owner, int side, double K, double volume, double elem_mass,
-                   const std::vector<double>& x);
+  // Who the contact nodes, segments and force nodes were before a rebuild: what the remap and the
+  // orphans (ENMASS 1) need of the old set, swapped out of it rather than copying the whole set
+  // (its surface builders alone hold a face record per element face).
+  struct Identities {
+    std::vector<Index> node_id;
+    std::vector<char> node_side;
+    std::vector<double> node_k;
+    std::vector<Index> seg_nodes;
+    std::vector<char> seg_side;
+    std::vector<Index> force_nodes;
+    std::vector<Index> nbr_start, nbr;
+  };
+
+  void assemble(const std::vector<double>& x, const AliveMask* alive, const Identities* old);
+  // Segment s (the arrays sized by resize_segments) from its quad q and owning element.
+  void set_segment(std::size_t s, const Index* q, const Index* owner, int side, double K, double volume,
+                   double elem_mass, const std::vector<double>& x);
+  void resize_segments(std::size_t S);
   void add_side(int side, const SurfaceBuilder& builder, const AliveMask* alive, const std::vector<double>& x);
-  void collect_nodes(const SegmentSet* old);
+  void collect_nodes(const Identities* old);
   void build_own_segments();
-  void build_neighbours();
+  // Same-side neighbours of every segment, searched (construction) or, after a rebuild, carried
+  // over from `old` through the remap for segments whose nodes kept their segments.
+  void build_neighbours(const Identities* old = nullptr, const SegmentSetRemap* remap = nullptr);
   void build_force_nodes();
 
   const model::Model* model_ = nullptr;
@@ -136,6 +153,7 @@ class SegmentSet {
   std::vector<char> force_side_a_;
   std::vector<double> force_inv_mass_;
   std::vector<Index> node_force_, seg_force_;  // force node of each contact node / segment node
+  Identities previous_;  // scratch of rebuild (capacity kept between rebuilds); not run state
 };
 
 }  // namespace plyimpact::contact

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact/parallel_items.hpp"
+
 namespace plyimpact::contact {
 
 namespace {
@@ -18,24 +20,38 @@ struct SideSegments {
 };
 
 SideSegments side_segments(const SegmentSet& set) {
-  SideSegments r;
-  for (std::size_t s = 0; s < set.num_segments(); ++s) {
+  const std::size_t S = set.num_segments();
+  double k_max[2] = {0, 0}, mass_max[2] = {0, 0}, k_fin_min = kInf;
+  int k_inf[2] = {0, 0};
+#pragma omp parallel for schedule(static) if (parallel_items(S)) \
+    reduction(max : k_max[:2], mass_max[:2], k_inf[:2]) reduction(min : k_fin_min)
+  for (long i = 0; i < long(S); ++i) {
+    const std::size_t s = std::size_t(i);
     const int side = set.segment_side(s);
     const double k = set.segment_stiffness(s);
-    if (!std::isfinite(k)) r.k_inf[side] = true;
+    if (!std::isfinite(k)) k_inf[side] = 1;
     if (std::isfinite(k)) {
-      r.k_max[side] = std::max(r.k_max[side], k);
-      r.k_fin_min = std::min(r.k_fin_min, k);
+      k_max[side] = std::max(k_max[side], k);
+      k_fin_min = std::min(k_fin_min, k);
     }
-    r.mass_max[side] = std::max(r.mass_max[side], set.segment_mass(s));
+    mass_max[side] = std::max(mass_max[side], set.segment_mass(s));
   }
+  SideSegments r;
+  for (int side = 0; side < 2; ++side) {
+    r.k_max[side] = k_max[side];
+    r.mass_max[side] = mass_max[side];
+    r.k_inf[side] = k_inf[side] != 0;
+  }
+  r.k_fin_min = k_fin_min;
   return r;
 }
 
 void stiffness_range(const SegmentSet& set, const PenaltyLaw& law, const SideSegments& segs, StiffnessBounds& b) {
-  b.k_min = kInf;
-  b.k_max = 0;
-  for (std::size_t i = 0; i < set.num_nodes(); ++i) {
+  double k_min = kInf, k_max = 0;
+  const std::size_t N = set.num_nodes();
+#pragma omp parallel for schedule(static) if (parallel_items(N)) reduction(min : k_min) reduction(max : k_max)
+  for (long node = 0; node < long(N); ++node) {
+    const std::size_t i = std::size_t(node);
     const int other = set.other_side(i);
     const double k_node = set.node_stiffness(i);
     double k_lo = 0, k_hi = 0;
@@ -60,10 +76,11 @@ void stiffness_range(const SegmentSet& set, const PenaltyLaw& law, const SideSeg
       k_lo = k_hi;
     }
     if (!(k_hi > 0) || !std::isfinite(k_hi)) continue;
-    b.k_min = std::min(b.k_min, k_lo > 0 && std::isfinite(k_lo) ? k_lo : k_hi);
-    b.k_max = std::max(b.k_max, k_hi);
+    k_min = std::min(k_min, k_lo > 0 && std::isfinite(k_lo) ? k_lo : k_hi);
+    k_max = std::max(k_max, k_hi);
   }
-  if (!std::isfinite(b.k_min)) b.k_min = 0;
+  b.k_min = std::isfinite(k_min) ? k_min : 0;
+  b.k_max = k_max;
 }
 
 }  // namespace
@@ -86,17 +103,22 @@ StiffnessBounds stiffness_bounds(const SegmentSet& set, const PenaltyLaw& law, c
   const double dt2 = law.dt_c * law.dt_c;
   const std::size_t S = set.num_segments(), N = set.num_nodes();
   double sn_k_max[2] = {0, 0}, sn_segm_max[2] = {0, 0}, sf_max[2] = {0, 0};
-  bool sn_k_inf[2] = {false, false};
-  for (std::size_t i = 0; i < N; ++i) {
+  int sn_k_inf[2] = {0, 0};
+#pragma omp parallel for schedule(static) if (parallel_items(N)) \
+    reduction(max : sn_k_max[:2], sn_segm_max[:2], sf_max[:2], sn_k_inf[:2])
+  for (long node = 0; node < long(N); ++node) {
+    const std::size_t i = std::size_t(node);
     const int side = set.node_side(i);
     if (std::isfinite(set.node_stiffness(i))) sn_k_max[side] = std::max(sn_k_max[side], set.node_stiffness(i));
-    else sn_k_inf[side] = true;
+    else sn_k_inf[side] = 1;
     sn_segm_max[side] = std::max(sn_segm_max[side], set.node_segment_mass(i));
     sf_max[side] = std::max(sf_max[side], law.scale(side));
   }
   auto finite_or_zero = [](double k) { return std::isfinite(k) ? k : 0.0; };
   double A[2] = {0, 0}, B[2] = {0, 0};  // A[side]: contact nodes of that side; B[side]: its segments
-  for (std::size_t i = 0; i < N; ++i) {
+#pragma omp parallel for schedule(static) if (parallel_items(N)) reduction(max : A[:2])
+  for (long node = 0; node < long(N); ++node) {
+    const std::size_t i = std::size_t(node);
     const double m_i = set.node_mass(i);
     if (set.node_rigid(set.node_id(i)) || !(m_i > 0)) continue;
     const int side = set.node_side(i), other = set.other_side(i);
@@ -109,7 +131,9 @@ StiffnessBounds stiffness_bounds(const SegmentSet& set, const PenaltyLaw& law, c
     }
     A[side] = std::max(A[side], k / m_i);
   }
-  for (std::size_t s = 0; s < S; ++s) {
+#pragma omp parallel for schedule(static) if (parallel_items(S)) reduction(max : B[:2])
+  for (long seg = 0; seg < long(S); ++seg) {
+    const std::size_t s = std::size_t(seg);
     double m_s = kInf;
     for (int a = 0; a < 4; ++a) {
       const Index n = set.segment_nodes(s)[a];

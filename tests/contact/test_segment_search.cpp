@@ -24,6 +24,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "contact/segment_search.hpp"
 #include "contact/segment_set.hpp"
@@ -193,6 +195,41 @@ TEST(SegmentSet, RebuildKeepsTheIdentityOfWhatSurvives) {
   }
   EXPECT_EQ(nodes_gone, 2u);
   for (char c : r.new_node) EXPECT_EQ(c, 0);
+}
+
+// A rebuild carries a segment's neighbours over (renumbered) when none of its nodes lost or gained
+// a segment, and searches the others. Reference: by definition, the segments of the same side
+// sharing a node with s, ascending, found by comparing every pair of segments. Four rebuilds
+// erode elements of both plates, one and several at a time, including neighbours of earlier holes.
+TEST(SegmentSet, RebuiltNeighboursAreTheSegmentsOfTheSameSideSharingANode) {
+  const model::Model model = stacked_plates(0, 0);
+  contact::SegmentSetSpec spec;
+  spec.blocks[0] = {model.parts[0].block};
+  spec.blocks[1] = {model.parts[1].block};
+  contact::SegmentSet set(model, spec, model.X);
+  contact::AliveMask alive(model.blocks.size());
+  for (std::size_t b = 0; b < model.blocks.size(); ++b) alive[b].assign(model.blocks[b].size(), 1);
+  const std::size_t lower = std::size_t(model.parts[0].block), upper = std::size_t(model.parts[1].block);
+  const std::vector<std::vector<std::pair<std::size_t, Index>>> rounds = {
+      {{upper, 0}}, {{upper, 5}, {lower, 10}}, {{upper, 6}, {upper, 1}}, {{lower, 11}, {lower, 15}, {upper, 9}}};
+  for (std::size_t round = 0; round < rounds.size(); ++round) {
+    for (const auto& [block, element] : rounds[round]) alive[block][std::size_t(element)] = 0;
+    set.rebuild(alive, model.X);
+    const std::size_t S = set.num_segments();
+    for (std::size_t s = 0; s < S; ++s) {
+      std::vector<Index> expected;
+      const Index* q = set.segment_nodes(s);
+      for (std::size_t t = 0; t < S; ++t) {
+        if (t == s || set.segment_side(t) != set.segment_side(s)) continue;
+        const Index* p = set.segment_nodes(t);
+        bool shares = false;
+        for (int a = 0; a < 4; ++a) shares = shares || std::find(p, p + 4, q[a]) != p + 4;
+        if (shares) expected.push_back(Index(t));
+      }
+      const std::vector<Index> listed(set.neighbours_begin(s), set.neighbours_end(s));
+      EXPECT_EQ(listed, expected) << "round " << round << ", segment " << s;
+    }
+  }
 }
 
 // The sort lists in its buckets only the segments some node of the other side can reach before

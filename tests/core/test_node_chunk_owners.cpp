@@ -67,7 +67,9 @@ TEST(NodeChunkOwners, EveryChunkOnceInIncreasingOrderForAnyThreadCount) {
       for (long c : mine) EXPECT_TRUE(seen.insert(c).second) << "chunk " << c << " twice, " << nt << " threads";
     }
     EXPECT_EQ(long(seen.size()), chunks) << nt << " threads";
-    if (nt == 1) EXPECT_EQ(long(table[0].size()), chunks);
+    if (nt == 1) {
+      EXPECT_EQ(long(table[0].size()), chunks);
+    }
   }
 }
 
