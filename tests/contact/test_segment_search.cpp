@@ -53,17 +53,22 @@ model::Model stacked_plates(double dx, double dy) {
   return test::model_from_yaml(yaml, "stacked.yaml");
 }
 
-// A segment set of the two plates (side A lower, B upper) and a search sorted for ties at x.
+// The segment set of the two plates: side A the lower, B the upper.
+contact::SegmentSet plates_set(const model::Model& model) {
+  contact::SegmentSetSpec spec;
+  spec.blocks[0] = {model.parts[0].block};
+  spec.blocks[1] = {model.parts[1].block};
+  return contact::SegmentSet(model, spec, model.X);
+}
+
+// That set and a search sorted for ties at x.
 struct Tie {
   contact::SegmentSet set;
   contact::SegmentSearch search;
 };
 
 Tie make_tie(const model::Model& model) {
-  contact::SegmentSetSpec spec;
-  spec.blocks[0] = {model.parts[0].block};
-  spec.blocks[1] = {model.parts[1].block};
-  Tie t{contact::SegmentSet(model, spec, model.X), contact::SegmentSearch(contact::SearchOptions{})};
+  Tie t{plates_set(model), contact::SegmentSearch(contact::SearchOptions{})};
   t.search.reset(t.set, model.X.data());
   t.search.sort(t.set, model.X.data(), 0.0, /*full_depth=*/true);
   return t;
@@ -160,10 +165,7 @@ TEST(SegmentSearch, ShiftedInterfaceNodesProjectAtTheirBilinearCoordinates) {
 
 TEST(SegmentSet, RebuildKeepsTheIdentityOfWhatSurvives) {
   const model::Model model = stacked_plates(0, 0);
-  contact::SegmentSetSpec spec;
-  spec.blocks[0] = {model.parts[0].block};
-  spec.blocks[1] = {model.parts[1].block};
-  contact::SegmentSet set(model, spec, model.X);
+  contact::SegmentSet set = plates_set(model);
   const contact::SegmentSet before = set;
   const std::size_t upper = std::size_t(model.parts[1].block);
   contact::AliveMask alive(model.blocks.size());
@@ -203,10 +205,7 @@ TEST(SegmentSet, RebuildKeepsTheIdentityOfWhatSurvives) {
 // erode elements of both plates, one and several at a time, including neighbours of earlier holes.
 TEST(SegmentSet, RebuiltNeighboursAreTheSegmentsOfTheSameSideSharingANode) {
   const model::Model model = stacked_plates(0, 0);
-  contact::SegmentSetSpec spec;
-  spec.blocks[0] = {model.parts[0].block};
-  spec.blocks[1] = {model.parts[1].block};
-  contact::SegmentSet set(model, spec, model.X);
+  contact::SegmentSet set = plates_set(model);
   contact::AliveMask alive(model.blocks.size());
   for (std::size_t b = 0; b < model.blocks.size(); ++b) alive[b].assign(model.blocks[b].size(), 1);
   const std::size_t lower = std::size_t(model.parts[0].block), upper = std::size_t(model.parts[1].block);
