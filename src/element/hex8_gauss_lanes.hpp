@@ -40,16 +40,18 @@ inline const GaussLaneTable& gauss_lane_table() {
 }
 
 // J[3a+c][point] = sum_k u_a,k dN_k/dxi_c at every point (u = x: dx/dxi; u = v: dv/dxi).
+// The nine components accumulate side by side, node by node: each still adds its nodes in order
+// (the same values), but nine independent multiply-adds are in flight instead of one component's
+// chain of eight dependent ones.
 PLYIMPACT_LANE_KERNEL void hex8_gauss_jacobians_lanes(const NodeVec& u, LaneVec<9>& J) {
   const auto& dN = gauss_lane_table().dN;
-  for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 3; ++c) {
-      PLYIMPACT_LANES J[3 * a + c][l] = 0;
-      for (int k = 0; k < 8; ++k) {
-        const double uk = u[a][k];
-        PLYIMPACT_LANES J[3 * a + c][l] += uk * dN[c][k][l];
-      }
+  alignas(64) double acc[9][kLanes] = {};
+  for (int k = 0; k < 8; ++k)
+    for (int a = 0; a < 3; ++a) {
+      const double uk = u[a][k];
+      for (int c = 0; c < 3; ++c) PLYIMPACT_LANES acc[3 * a + c][l] += uk * dN[c][k][l];
     }
+  for (int i = 0; i < 9; ++i) PLYIMPACT_LANES J[i][l] = acc[i][l];
 }
 
 // inverse3 per lane: inv = A^-1 (row-major), det = det A (inv not finite where det = 0).
