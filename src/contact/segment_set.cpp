@@ -303,8 +303,8 @@ void SegmentSet::build_neighbours(const Identities* old, const SegmentSetRemap* 
     for (int k = 0; k < 4; ++k) of_node[std::size_t(fill[std::size_t(seg_nodes_[4 * s + std::size_t(k)])]++)] = Index(s);
   // After a rebuild, a segment none of whose nodes lost or gained a segment has the neighbours it
   // had, renumbered. The survivors keep their order (both sets list the exterior faces in the
-  // builders' fixed face order), so the renumbered lists stay ascending. Searching every segment's
-  // nodes instead was a third of a rebuild, and a rebuild runs at every eroding cycle.
+  // builders' fixed face order), so the renumbered lists stay ascending. A search of every segment's
+  // nodes would cost a third of a rebuild (BENCHMARKS.md), and one runs at every eroding cycle.
   std::vector<Index> old_of;
   std::vector<char> changed;
   if (old && remap) {
