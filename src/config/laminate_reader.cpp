@@ -372,12 +372,26 @@ void check_symmetry(const Reader& r, const std::vector<double>& angles) {
   }
 }
 
+// `size: [x, y]` of a zone centred on the impact point, which must lie inside the plate.
+void read_zone_size(const Reader& zone, const LaminateSpec& lam, const char* what, double& x, double& y) {
+  const Reader size = zone.at("size", "[x, y]");
+  size.require_list("[x, y]", false);
+  if (size.node().size() != 2) size.fail("expected [x, y]", "[x, y]");
+  const auto xy = size.items();
+  x = xy[0].as_quantity(u::length, Limits::positive(msg() << what << " size").of(QuantityKind::size));
+  y = xy[1].as_quantity(u::length, Limits::positive(msg() << what << " size").of(QuantityKind::size));
+  if (lam.impact_x - x / 2 <= 0 || lam.impact_x + x / 2 >= lam.length)
+    xy[0].fail(msg() << "the " << what << " reaches the plate edge", "a zone inside the plate");
+  if (lam.impact_y - y / 2 <= 0 || lam.impact_y + y / 2 >= lam.width)
+    xy[1].fail(msg() << "the " << what << " reaches the plate edge", "a zone inside the plate");
+}
+
 }  // namespace
 
 void read_laminate(const Reader& r, Scene& scene) {
   r.require_map("a mapping with length, width, ply_thickness, stacking, material, section, element_size, ...");
   r.allow_keys({"length", "width", "ply_thickness", "stacking", "material", "section", "elements_per_ply",
-                "element_size", "impact_point", "refined_zone", "refinement_level", "interfaces", "group_plies",
+                "element_size", "impact_point", "refined_zone", "impact_zone", "refinement_level", "interfaces", "group_plies",
                 "symmetry", "supports"});
   LaminateSpec lam;
   lam.where = r.where();
@@ -426,18 +440,16 @@ void read_laminate(const Reader& r, Scene& scene) {
   if (const auto z = r.find("refined_zone")) {
     z->require_map("{size: [x, y], element_size: h}");
     z->allow_keys({"size", "element_size"});
-    const Reader size = z->at("size", "[x, y]");
-    size.require_list("[x, y]", false);
-    if (size.node().size() != 2) size.fail("expected [x, y]", "[x, y]");
-    const auto xy = size.items();
-    lam.zone_x = xy[0].as_quantity(u::length, Limits::positive("zone size").of(QuantityKind::size));
-    lam.zone_y = xy[1].as_quantity(u::length, Limits::positive("zone size").of(QuantityKind::size));
-    if (lam.impact_x - lam.zone_x / 2 <= 0 || lam.impact_x + lam.zone_x / 2 >= lam.length)
-      xy[0].fail("the refined zone reaches the plate edge", "a zone inside the plate");
-    if (lam.impact_y - lam.zone_y / 2 <= 0 || lam.impact_y + lam.zone_y / 2 >= lam.width)
-      xy[1].fail("the refined zone reaches the plate edge", "a zone inside the plate");
+    read_zone_size(*z, lam, "refined zone", lam.zone_x, lam.zone_y);
     lam.zone_element_size = z->quantity("element_size", u::length,
                                         Limits::interval(0, true, lam.element_size, false, "zone element size").of(QuantityKind::size));
+  }
+  if (const auto z = r.find("impact_zone")) {
+    z->require_map("{size: [x, y], section: name}");
+    z->allow_keys({"size", "section"});
+    read_zone_size(*z, lam, "impact zone", lam.impact_zone_x, lam.impact_zone_y);
+    lam.impact_zone_section = z->reference("section", names_of(scene.sections), "section", "sections");
+    lam.impact_zone_where = z->where();
   }
   lam.refinement_level = int(r.integer_or("refinement_level", 0, Limits::interval(0, false, 6, false, "refinement level")));
   lam.delaminating = angles.size() > 1 ? std::vector<bool>(angles.size() - 1, false) : std::vector<bool>{};
@@ -463,6 +475,8 @@ void read_laminate(const Reader& r, Scene& scene) {
       std::size_t first = i - 1;
       while (first > 0 && lam.plies[first - 1].part == ply.part) --first;
       scene.parts[std::size_t(ply.part)].name = msg() << "plies_" << first + 1 << "-" << i + 1 << "_" << angle_label(angles[i]);
+      ply.zone_part = lam.plies.back().zone_part;
+      if (ply.zone_part >= 0) scene.parts[std::size_t(ply.zone_part)].name = scene.parts[std::size_t(ply.part)].name + "_zone";
     } else {
       PartSpec part;
       part.name = msg() << "ply_" << i + 1 << "_" << angle_label(angles[i]);
@@ -475,7 +489,17 @@ void read_laminate(const Reader& r, Scene& scene) {
       part.beta = ply.angle;
       part.where = stacking.where();
       ply.part = int(scene.parts.size());
-      scene.parts.push_back(std::move(part));
+      scene.parts.push_back(part);
+      if (!lam.impact_zone_section.empty()) {
+        part.name += "_zone";
+        if (std::find(user_parts.begin(), user_parts.end(), part.name) != user_parts.end())
+          r.fail(msg() << "the generated part name '" << part.name << "' is already used in parts",
+                 "part names that do not start with ply_");
+        part.id = next_id++;
+        part.section = lam.impact_zone_section;
+        ply.zone_part = int(scene.parts.size());
+        scene.parts.push_back(std::move(part));
+      }
     }
     lam.plies.push_back(ply);
   }

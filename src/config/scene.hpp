@@ -214,6 +214,7 @@ struct PlySpec {
   double thickness = 0;   // m
   std::string material;   // MaterialSpec::name
   int part = -1;          // index into Scene::parts (one part per ply or per sub-laminate block)
+  int zone_part = -1;     // its elements in the impact zone (LaminateSpec::impact_zone_section); -1: none
 };
 
 // A support of the plate; the loader turns it into a Generated node set plus a fixed condition.
@@ -251,6 +252,13 @@ struct LaminateSpec {
   // Refined zone: zone_x by zone_y centred on the impact point, meshed uniformly at
   // zone_element_size, graded (geometric progression) out to element_size. 0 = no zone.
   double zone_x = 0, zone_y = 0, zone_element_size = 0;
+  // Impact zone: the elements whose centre lies in impact_zone_x by impact_zone_y, centred on the
+  // impact point, form parts of their own (one per ply part, named as it with "_zone") with the
+  // section impact_zone_section, e.g. fully integrated plies where they crush, one-point ones
+  // outside. Empty section: no impact zone.
+  double impact_zone_x = 0, impact_zone_y = 0;
+  std::string impact_zone_section;
+  SourceLocation impact_zone_where;
   int refinement_level = 0;          // every in-plane division halved this many times (nested meshes)
   // delaminating[i]: the interface between plies i and i+1 (0-based) gets duplicated nodes.
   std::vector<bool> delaminating;

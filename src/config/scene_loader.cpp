@@ -604,6 +604,26 @@ Vec3 unit_vector(const Reader& r, std::string_view key, Vec3 fallback) {
   return x;
 }
 
+// The impact-zone part (LaminateSpec::impact_zone_section) of the ply part `name`, or "" if none.
+std::string impact_zone_partner(const Scene& scene, const std::string& name) {
+  if (!scene.laminate) return "";
+  for (const PlySpec& ply : scene.laminate->plies)
+    if (ply.zone_part >= 0 && scene.parts[std::size_t(ply.part)].name == name)
+      return scene.parts[std::size_t(ply.zone_part)].name;
+  return "";
+}
+
+// Adds to a list of parts the impact-zone parts of the plies it names (not listed already): a ply
+// named in a contact or a wall is the whole ply; without its zone part the ply's faces around the
+// zone would become an exposed surface and the zone's faces none.
+void add_impact_zone_parts(const Scene& scene, std::vector<std::string>& parts) {
+  const std::size_t named = parts.size();
+  for (std::size_t i = 0; i < named; ++i) {
+    const std::string zone = impact_zone_partner(scene, parts[i]);
+    if (!zone.empty() && std::find(parts.begin(), parts.end(), zone) == parts.end()) parts.push_back(zone);
+  }
+}
+
 std::vector<RigidWallSpec> read_rigid_walls(const Reader& r, const Scene& scene) {
   const char* shape = "{name, point: [x, y, z], normal: [nx, ny, nz], optional friction, velocity, size: [a, b], "
                       "u: [ux, uy, uz], parts: [...]}";
@@ -648,13 +668,15 @@ std::vector<RigidWallSpec> read_rigid_walls(const Reader& r, const Scene& scene)
           p.fail("rigid walls act on deformable parts only", "a part whose material is not MAT_020");
         spec.parts.push_back(name);
       }
+      add_impact_zone_parts(scene, spec.parts);
     }
     out.push_back(std::move(spec));
   }
   return out;
 }
 
-std::vector<std::string> read_surface(const Reader& r, const std::vector<std::string>& names) {
+std::vector<std::string> read_surface(const Reader& r, const Scene& scene) {
+  const auto names = body_names(scene);
   std::vector<std::string> out;
   auto one = [&](const Reader& n) {
     const std::string name = n.as_name();
@@ -671,6 +693,7 @@ std::vector<std::string> read_surface(const Reader& r, const std::vector<std::st
     r.require_list("a part name or a list of part names", true);
     for (const Reader& n : r.items()) one(n);
   }
+  add_impact_zone_parts(scene, out);
   return out;
 }
 
@@ -691,7 +714,7 @@ void read_tiebreak_contact(const Reader& c, const Scene& scene, ContactSpec& spe
   spec.MST = c.quantity_or("MST", u::length, 0.0, Limits::non_negative("MST"));
   if (const auto s = c.find("surfaces"))
     for (const Reader& side : s->items())
-      for (const auto& name : read_surface(side, body_names(scene)))
+      for (const auto& name : read_surface(side, scene))
         if (name == "impactor" || is_rigid_part(scene, name))
           side.fail("part '" + name + "' is rigid: a tiebreak ties deformable surfaces",
                     "[slave, master]: deformable part names");
@@ -700,7 +723,6 @@ void read_tiebreak_contact(const Reader& c, const Scene& scene, ContactSpec& spe
 std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
   const char* shape = "{name, type, surfaces: [a, b] | parts: [...], SOFT, SOFSCL, SLSFAC, SFS, SFM, FS, FD, DC, VDC, ...}";
   r.require_list(std::string("a list of ") + shape, false);
-  const auto names = body_names(scene);
   std::vector<ContactSpec> out;
   for (const Reader& c : r.items()) {
     c.require_map(shape);
@@ -732,8 +754,8 @@ std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
       s.require_list("[a, b]: two part names or lists of part names", false);
       if (s.node().size() != 2) s.fail("expected two surfaces", "[a, b]: two part names or lists of part names");
       const auto items = s.items();
-      spec.surface_a = read_surface(items[0], names);
-      spec.surface_b = read_surface(items[1], names);
+      spec.surface_a = read_surface(items[0], scene);
+      spec.surface_b = read_surface(items[1], scene);
       for (const auto& a : spec.surface_a)
         if (std::find(spec.surface_b.begin(), spec.surface_b.end(), a) != spec.surface_b.end())
           items[1].fail("part '" + a + "' is on both sides", "disjoint part lists (use a single-surface contact)");
@@ -746,7 +768,7 @@ std::vector<ContactSpec> read_contacts(const Reader& r, const Scene& scene) {
       if (c.has("surfaces") && c.has("parts"))
         c.at("surfaces", "").fail("both surfaces and parts on a single-surface contact", "one list: parts: [...] or surfaces: [...]");
       const char* what = "a list of part names (one surface in contact with itself)";
-      spec.surface_a = read_surface(c.has("surfaces") ? c.at("surfaces", what) : c.at("parts", what), names);
+      spec.surface_a = read_surface(c.has("surfaces") ? c.at("surfaces", what) : c.at("parts", what), scene);
     }
     spec.SOFT = c.int_choice_or("SOFT", 0, {0, 1, 2});
     spec.SOFSCL = c.quantity_or("SOFSCL", u::dimensionless, spec.SOFSCL,

@@ -127,6 +127,28 @@ double min_spacing(const std::vector<double>& a) {
   return h;
 }
 
+// Whether the element (its corner nodes c) has its centre in the impact zone, if there is one.
+bool in_impact_zone(const config::LaminateSpec& lam, const std::vector<double>& coords, const Index* c) {
+  if (lam.impact_zone_section.empty()) return false;
+  double centre[2] = {0, 0};
+  for (int k = 0; k < 8; ++k)
+    for (int d = 0; d < 2; ++d) centre[d] += coords[3 * std::size_t(c[k]) + d] / 8;
+  // Centres lie half an element from any grid line, so a zone edge on a grid line decides clearly.
+  return std::abs(centre[0] - lam.impact_x) < lam.impact_zone_x / 2 &&
+         std::abs(centre[1] - lam.impact_y) < lam.impact_zone_y / 2;
+}
+
+// A zone narrower than the elements at the impact point holds no element centre: refused, since its
+// parts would be empty and the scene would silently keep the outer section everywhere.
+void require_impact_zone_elements(const config::LaminateSpec& lam, const Mesh& m) {
+  if (lam.impact_zone_section.empty()) return;
+  for (std::size_t e = 0; e < m.num_elements(); ++e)
+    if (m.element_part[e] == lam.plies[std::size_t(m.element_ply[e])].zone_part) return;
+  throw InputError(config::at(lam.impact_zone_where) << "no element centre lies in the " << lam.impact_zone_x * 1e3
+                         << " x " << lam.impact_zone_y * 1e3
+                         << " mm impact zone; allowed: a zone at least one element wide around the impact point");
+}
+
 }  // namespace
 
 Mesh mesh_laminate(const config::Scene& scene) {
@@ -195,10 +217,12 @@ Mesh mesh_laminate(const config::Scene& scene) {
     }
     for (std::size_t p = 0; p < ply_hex.size(); ++p) {
       m.hex.insert(m.hex.end(), ply_hex[p].begin(), ply_hex[p].end());
-      m.element_part.insert(m.element_part.end(), ply_hex[p].size() / 8, lam.plies[p].part);
+      for (std::size_t e = 0; e < ply_hex[p].size(); e += 8)
+        m.element_part.push_back(in_impact_zone(lam, m.coords, &ply_hex[p][e]) ? lam.plies[p].zone_part : lam.plies[p].part);
       m.element_ply.insert(m.element_ply.end(), ply_hex[p].size() / 8, int(p));
     }
   });
+  require_impact_zone_elements(lam, m);
   const std::size_t expected = (g.x.size() - 1) * (g.y.size() - 1) * (g.z.size() - 1);
   if (m.num_elements() != expected || m.num_nodes() != g.x.size() * g.y.size() * g.z.size())
     throw InputError(msg() << "meshing failed: gmsh made " << m.num_elements() << " elements and " << m.num_nodes()

@@ -235,6 +235,81 @@ TEST(LaminateMesher, GroupedPliesShareAPart) {
   EXPECT_EQ(m.element_ply[4], 1);  // second ply of the first block
 }
 
+// laminate.impact_zone: the elements whose centre lies in the zone get a part per ply of their own
+// with the zone's section (same material and ply angle); a contact naming a ply takes its zone part
+// along. The zone is the refined zone here, so its edges are grid lines and each ply has exactly
+// 10 x 6 zone elements of 1 mm; the refusals name the key.
+TEST(LaminateMesher, ImpactZoneElementsFormPartsOfTheirOwn) {
+  const std::string cards = std::string(test::kPlyCards) + "  full: {ELFORM: -2}\n";
+  auto scene_with = [&](const std::string& zone) {
+    return "units: mm-t-s-MPa\ncontrol: {termination_time: 1.0e-6}\n" + cards + R"(laminate:
+  material: ply
+  section: s
+  length: 40
+  width: 30
+  ply_thickness: 0.5
+  stacking: "[0/90]"
+  element_size: 4
+  refined_zone: {size: [10, 6], element_size: 1}
+)" + zone + R"(contacts:
+  - {name: plies, type: automatic_single_surface, parts: [ply_1_0, ply_2_90]}
+)";
+  };
+  const config::Scene scene =
+      config::load_scene_from_string(scene_with("  impact_zone: {size: [10, 6], section: full}\n"), "t.yaml");
+  ASSERT_EQ(scene.parts.size(), 4u);
+  const char* names[4] = {"ply_1_0", "ply_1_0_zone", "ply_2_90", "ply_2_90_zone"};
+  for (int p = 0; p < 4; ++p) {
+    EXPECT_EQ(scene.parts[std::size_t(p)].name, names[p]);
+    EXPECT_EQ(scene.parts[std::size_t(p)].section, p % 2 ? "full" : "s");
+    EXPECT_EQ(scene.parts[std::size_t(p)].material, "ply");
+    EXPECT_EQ(scene.parts[std::size_t(p)].beta, scene.parts[std::size_t(p - p % 2)].beta);
+  }
+  ASSERT_EQ(scene.contacts.size(), 1u);
+  EXPECT_EQ(scene.contacts[0].surface_a,
+            (std::vector<std::string>{"ply_1_0", "ply_2_90", "ply_1_0_zone", "ply_2_90_zone"}));
+
+  const mesh::Mesh m = mesh::mesh_laminate(scene);
+  const double cx = 0.020, cy = 0.015;  // impact point: the plate centre, m
+  std::size_t zone_elements[2] = {0, 0};
+  double zone_volume[2] = {0, 0};
+  for (std::size_t e = 0; e < m.num_elements(); ++e) {
+    double x[3][8], detj[8], centre[2] = {0, 0};
+    gather(m, e, x);
+    for (int k = 0; k < 8; ++k) centre[0] += x[0][k] / 8, centre[1] += x[1][k] / 8;
+    const bool inside = std::abs(centre[0] - cx) < 0.005 && std::abs(centre[1] - cy) < 0.003;
+    const int ply = m.element_ply[e];
+    EXPECT_EQ(m.element_part[e], 2 * ply + (inside ? 1 : 0)) << "element " << e;
+    if (m.element_part[e] != 2 * ply + 1) continue;
+    ++zone_elements[ply];
+    element::hex8_corner_jacobians(x, detj);
+    for (double d : detj) zone_volume[ply] += d;  // corner rule: exact for a box
+  }
+  for (int ply = 0; ply < 2; ++ply) {
+    EXPECT_EQ(zone_elements[ply], 60u);
+    EXPECT_NEAR(zone_volume[ply], 10e-3 * 6e-3 * 0.5e-3, 1e-15);
+  }
+
+  auto refusal = [&](const std::string& zone, bool at_meshing) {
+    try {
+      const config::Scene bad = config::load_scene_from_string(scene_with(zone), "t.yaml");
+      if (at_meshing) mesh::mesh_laminate(bad);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  std::string w = refusal("  impact_zone: {size: [10, 6], section: ful}\n", false);
+  EXPECT_NE(w.find("t.yaml:18:"), std::string::npos) << w;
+  EXPECT_NE(w.find("laminate.impact_zone.section"), std::string::npos) << w;
+  EXPECT_NE(w.find("full"), std::string::npos) << w;
+  w = refusal("  impact_zone: {size: [40, 6], section: full}\n", false);
+  EXPECT_NE(w.find("the impact zone reaches the plate edge"), std::string::npos) << w;
+  w = refusal("  impact_zone: {size: [0.5, 0.5], section: full}\n", true);  // centres lie 0.5 mm off the point
+  EXPECT_NE(w.find("t.yaml:18:"), std::string::npos) << w;
+  EXPECT_NE(w.find("laminate.impact_zone: no element centre lies in the 0.5 x 0.5 mm impact zone"), std::string::npos) << w;
+}
+
 // mesh_scene renumbers a laminate's nodes in the order its plies' elements first use them
 // (mesh/node_order): the mesh must be the same mesh (every element's corners, every interface
 // pair and segment, every node set at the same coordinates), and the nodes each ply brings must be
