@@ -13,6 +13,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/state_visitor.hpp"
 
@@ -24,6 +26,9 @@ struct HourglassVerdict {
   double eroded_hourglass = 0;  // J, the part of `hourglass` that eroded elements held when deleted
   bool floor_governs = false;  // the denominator at the maximum was the floor, not the internal energy
   bool passed = true;          // max_ratio <= limit
+  // J at the maximum, per part (model::Model::parts order), live and eroded elements: where the
+  // hourglass energy is (LS-DYNA's per-part MATSUM answers the same question). Empty: not recorded.
+  std::vector<double> by_part;
 };
 
 class HourglassWatch {
@@ -34,7 +39,12 @@ class HourglassWatch {
 
   // hourglass, internal, reference: J at time t (s); eroded_hourglass: the part of `hourglass` that
   // eroded elements held (reported with the maximum: the check counts it, as LS-DYNA's totals do).
-  void observe(double t, double hourglass, double internal, double reference, double eroded_hourglass = 0);
+  // Returns whether this sample is the new maximum (the caller may then record_by_part).
+  bool observe(double t, double hourglass, double internal, double reference, double eroded_hourglass = 0);
+  // The parts' names (model order), for the warning to say where the hourglass energy is.
+  void name_parts(std::vector<std::string> names) { part_names_ = std::move(names); }
+  // The hourglass energy of each part at the sample observe just found to be the maximum.
+  void record_by_part(const std::vector<double>& joules) { by_part_ = joules; }
 
   bool exceeded() const { return max_ratio_ > warn_ratio_; }
   double max_ratio() const { return max_ratio_; }
@@ -49,6 +59,8 @@ class HourglassWatch {
   double max_ratio_ = 0;
   double time_ = 0, hourglass_ = 0, denominator_ = 0, eroded_hourglass_ = 0;  // at the largest ratio
   bool floor_governs_ = false;
+  std::vector<double> by_part_;          // at the largest ratio, J per part
+  std::vector<std::string> part_names_;  // not run state: the model's
 };
 
 }  // namespace plyimpact::run

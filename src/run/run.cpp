@@ -140,7 +140,7 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
                         coupon ? std::vector<const HistoryColumns*>{&*coupon} : std::vector<const HistoryColumns*>{});
   FrameWriter frames(model, options.output_dir, frame_interval);
   InterfaceFrameWriter interfaces(model, options.output_dir, frame_interval);
-  HourglassCheck hourglass(history_interval, model.control.hourglass_warn_ratio);
+  HourglassCheck hourglass(model, history_interval, model.control.hourglass_warn_ratio);
   ContactEnergyCheck contact_energy(model);
   ContactPenetrationCheck penetrations(options.progress);
   EnergyBalanceCheck energy_balance(history_interval);

@@ -27,14 +27,36 @@ std::string describe(const contact::PenetrationEvent& e) {
   return b;
 }
 
+// Each part's hourglass energy, J: the sum over its elements, live and eroded (an eroded element
+// keeps what it held, as the run's total does).
+std::vector<double> hourglass_by_part(const solver::Solver& solver) {
+  const model::Model& model = solver.model();
+  std::vector<double> joules(model.parts.size(), 0.0);
+  for (std::size_t p = 0; p < model.parts.size(); ++p) {
+    const int b = model.parts[p].block;
+    if (b < 0 || std::size_t(b) >= solver.state().blocks.size()) continue;
+    for (double h : solver.state().blocks[std::size_t(b)].hourglass_energy) joules[p] += h;
+  }
+  return joules;
+}
+
 }  // namespace
+
+HourglassCheck::HourglassCheck(const model::Model& model, double sample_interval, double warn_ratio)
+    : samples_(sample_interval), watch_(warn_ratio) {
+  std::vector<std::string> names;
+  for (const auto& part : model.parts) names.push_back(part.name);
+  watch_.name_parts(std::move(names));
+}
 
 void HourglassCheck::after_cycle(const solver::Solver& solver) {
   const double t = solver.state().time;
   if (!samples_.due(t) || !(solver.balance().time > 0)) return;
   samples_.advance(t);
   const solver::Energies& e = solver.balance();
-  watch_.observe(e.time, e.hourglass(), e.internal(), reference_energy(solver), solver.state().eroded_hourglass_energy);
+  if (watch_.observe(e.time, e.hourglass(), e.internal(), reference_energy(solver),
+                     solver.state().eroded_hourglass_energy))
+    watch_.record_by_part(hourglass_by_part(solver));
 }
 
 void HourglassCheck::stop(const solver::Solver* solver, RunReport& report) {

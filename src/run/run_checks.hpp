@@ -23,7 +23,7 @@ namespace plyimpact::run {
 
 class HourglassCheck : public RunObserver {
  public:
-  HourglassCheck(double sample_interval, double warn_ratio) : samples_(sample_interval), watch_(warn_ratio) {}
+  HourglassCheck(const model::Model& model, double sample_interval, double warn_ratio);
   void after_cycle(const solver::Solver& solver) override;
   void stop(const solver::Solver* solver, RunReport& report) override;
   void visit_state(StateVisitor& visitor) override;

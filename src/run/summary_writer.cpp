@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdint>
 
 #include "solver/contributors.hpp"
@@ -167,6 +168,18 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     hg["time_of_max"] = h.time;
     hg["hourglass_energy_at_max"] = h.hourglass;
     hg["eroded_hourglass_energy_at_max"] = h.eroded_hourglass;  // part held by eroded elements
+    output::Json by_part = output::Json::array();  // where it was: parts holding any, largest first
+    std::vector<std::size_t> order;
+    for (std::size_t p = 0; p < h.by_part.size() && p < model.parts.size(); ++p)
+      if (h.by_part[p] > 0) order.push_back(p);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return h.by_part[a] > h.by_part[b]; });
+    for (std::size_t p : order) {
+      output::Json entry = output::Json::object();
+      entry["part"] = model.parts[p].name;
+      entry["hourglass_energy"] = h.by_part[p];
+      by_part.push_back(entry);
+    }
+    hg["by_part_at_max"] = by_part;
     hg["denominator_at_max"] = h.denominator;
     hg["floor_governs"] = h.floor_governs;
     hg["limit"] = h.limit;

@@ -9,10 +9,12 @@
 //  - Hourglass energy in a run whose internal energy stays tiny is judged against the floor:
 //    0.02 J over 0.1 J = 20 %, failed, saying the floor governed.
 //  - A run that stays below the limit passes and leaves no warning.
+//  - The per-part energies recorded at the maximum stay with it, and the warning names the largest.
 #include <gtest/gtest.h>
 
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "run/hourglass_watch.hpp"
 
@@ -75,6 +77,25 @@ TEST(HourglassWatch, ErodedShareIsReportedWithTheMaximum) {
   run::HourglassWatch live(0.1);
   live.observe(1e-5, 0.4, 1.0, 10.0, 0.1);
   EXPECT_NE(live.warning().find("use IHQ 6"), std::string::npos) << live.warning();
+}
+
+// Where it is: the per-part energies recorded at a new maximum are kept with it (a later, smaller
+// share does not replace them), and the warning names the part holding the most.
+TEST(HourglassWatch, PartsAtTheMaximumAreKeptAndTheLargestNamed) {
+  run::HourglassWatch w(0.1);
+  w.name_parts({"ply_1_0", "ply_1_0_zone", "impactor"});
+  EXPECT_TRUE(w.observe(1e-5, 0.2, 1.0, 10.0));
+  w.record_by_part({0.05, 0.0, 0.15});
+  EXPECT_TRUE(w.observe(2e-5, 0.4, 1.0, 10.0));  // a new maximum: its own parts
+  w.record_by_part({0.3, 0.0, 0.1});
+  EXPECT_FALSE(w.observe(3e-5, 0.3, 1.0, 10.0));  // smaller share: nothing to record
+  const run::HourglassVerdict v = w.verdict();
+  EXPECT_EQ(v.by_part, (std::vector<double>{0.3, 0.0, 0.1}));
+  const std::string s = w.warning();
+  EXPECT_NE(s.find("the most in part ply_1_0 (0.3 J"), std::string::npos) << s;
+  EXPECT_TRUE(w.observe(4e-5, 0.6, 1.0, 10.0));  // a new maximum not yet recorded: no stale parts
+  EXPECT_TRUE(w.verdict().by_part.empty());
+  EXPECT_EQ(w.warning().find("the most in part"), std::string::npos) << w.warning();
 }
 
 TEST(HourglassWatch, RunBelowTheLimitPasses) {
