@@ -14,11 +14,12 @@ ply_angle, alive, mat054_ef/ec/em/ed) and the rigid block, as ParaView's PVD rea
 (a multiblock with named blocks when a time has several parts, else the data set itself).
 """
 
-from vtkmodules.vtkCommonCore import vtkDoubleArray
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIdList, vtkPoints
 from vtkmodules.vtkCommonDataModel import (vtkCompositeDataSet, vtkDataObject, vtkDataSet, vtkDataSetAttributes,
                                            vtkMultiBlockDataSet, vtkPolyData, vtkUnstructuredGrid)
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersCore import vtkAppendFilter, vtkAppendPolyData, vtkThreshold
+from vtkmodules.vtkFiltersExtraction import vtkExtractCells
 from vtkmodules.vtkFiltersGeneral import vtkTransformFilter
 from vtkmodules.vtkRenderingFreeType import vtkVectorText
 
@@ -50,6 +51,31 @@ CSCAN_ARRAYS = ("depth_shallowest", "depth", "damage")  # preferred colouring of
 
 
 # ---------------------------------------------------------------------------- blocks
+def on_reference(data):
+    """`data` with its points moved back by its point array `displacement` (as it is if it has
+    none): a damage map drawn where the material was. In the deformed frames the nodes only eroded
+    elements held fly off unrestrained (and the interface pairs of those plies with them), and
+    their bounds would set the tiles' size."""
+    u = data.GetPointData().GetArray("displacement") if data is not None else None
+    if u is None or data.GetNumberOfPoints() == 0:
+        return data
+    pts = vtkPoints()
+    pts.SetDataTypeToDouble()
+    pts.SetNumberOfPoints(data.GetNumberOfPoints())
+    for i in range(data.GetNumberOfPoints()):
+        x, d = data.GetPoint(i), u.GetTuple3(i)
+        pts.SetPoint(i, x[0] - d[0], x[1] - d[1], x[2] - d[2])
+    ref = data.NewInstance()
+    ref.ShallowCopy(data)
+    ref.SetPoints(pts)
+    return ref
+
+
+def reference_bodies(frame):
+    """The bodies block on its reference geometry (on_reference), or None."""
+    return on_reference(named_blocks(frame).get("bodies"))
+
+
 def named_blocks(data):
     """{name: data set} of a frame: the blocks of a multiblock by their NAME (the first leaf data
     set under each), or {"bodies": data} for a plain data set."""
@@ -100,6 +126,27 @@ def _moved(data, dx, dy, dz):
     f.SetInputData(data)
     f.Update()
     return f.GetOutput()
+
+
+def _over_plate(data, bounds):
+    """The cells of `data` whose points all lie over the plate's reference area (bounds, 1 %
+    margin): interface frames written before they had a `displacement` array cannot be moved back,
+    and the pairs of plies eroded under an impactor fly off with their nodes."""
+    mx, my = 0.01 * (bounds[1] - bounds[0]), 0.01 * (bounds[3] - bounds[2])
+    inside = [bounds[0] - mx <= p[0] <= bounds[1] + mx and bounds[2] - my <= p[1] <= bounds[3] + my
+              for p in (data.GetPoint(i) for i in range(data.GetNumberOfPoints()))]
+    keep = vtkIdList()
+    for c in range(data.GetNumberOfCells()):
+        ids = data.GetCell(c).GetPointIds()
+        if all(inside[ids.GetId(j)] for j in range(ids.GetNumberOfIds())):
+            keep.InsertNextId(c)
+    if keep.GetNumberOfIds() == data.GetNumberOfCells():
+        return data
+    extract = vtkExtractCells()
+    extract.SetInputData(data)
+    extract.SetCellList(keep)
+    extract.Update()
+    return extract.GetOutput()
 
 
 def _int_range(data, array):
@@ -158,9 +205,9 @@ def _tile_pitch(bounds):
 # ---------------------------------------------------------------------------- the view's pieces
 def ply_tiles(frame):
     """The plies of the bodies block side by side (ply 1 at the top left, rows of COLUMNS), each
-    moved so its reference plane is z = 0, with DAMAGE_ARRAY; eroded elements are kept (marked).
-    An empty grid when the frame has no ply_index array."""
-    bodies = named_blocks(frame).get("bodies")
+    moved so its reference plane is z = 0, with DAMAGE_ARRAY, on the reference geometry; eroded
+    elements are kept (marked). An empty grid when the frame has no ply_index array."""
+    bodies = reference_bodies(frame)
     out = vtkUnstructuredGrid()
     if bodies is None or bodies.GetCellData().GetArray("ply_index") is None:
         return out
@@ -194,6 +241,7 @@ def interface_tiles(interfaces, plate_bounds):
     px, py = _tile_pitch(plate_bounds)
     append = vtkAppendFilter()
     for k, block in enumerate(blocks):
+        block = _over_plate(on_reference(block), plate_bounds)
         zb = block.GetBounds()
         append.AddInputData(_moved(block, INTERFACES_X * px + (k % COLUMNS) * px, -(k // COLUMNS) * py, -zb[5]))
     append.Update()
@@ -218,7 +266,7 @@ def cscan_tile(cscan, plate_bounds):
 
 def tile_labels(frame, interfaces=None, cscan=None):
     """Labels under every tile: "ply <n>  <angle>", the interfaces' block names, "C-scan"."""
-    bodies = named_blocks(frame).get("bodies")
+    bodies = reference_bodies(frame)
     out = vtkPolyData()
     if bodies is None:
         return out
@@ -273,5 +321,5 @@ def colour_array(data, preferred=CSCAN_ARRAYS):
 
 
 def plate_bounds(frame):
-    bodies = named_blocks(frame).get("bodies")
+    bodies = reference_bodies(frame)
     return bodies.GetBounds() if bodies is not None else (0, 1, 0, 1, 0, 1)

@@ -22,6 +22,9 @@ output::QuadSurface make_surface(const interface::InterfaceLayout& l) {
   s.quads.assign(l.quads.begin(), l.quads.end());
   for (const char* name : {"damage", "mode_mixity", "opening_normal", "opening_shear", "traction_normal", "traction_shear"})
     s.point_fields.push_back({name, 1, std::vector<double>(n, 0.0), {}});
+  // The mid-surface's displacement from its reference position: Warp By Vector with -1, or a
+  // damage map drawn flat, undoes the motion (the pairs of eroded plies fly off with their nodes).
+  s.point_fields.push_back({"displacement", 3, std::vector<double>(3 * n, 0.0), {}});
   s.point_int_fields.push_back({"delaminated", std::vector<std::int32_t>(n, 0)});
   s.units = {{"coordinates", "m (current mid-surface of the interface)"},
              {"damage", "- (0 intact .. 1 separated)"},
@@ -30,6 +33,7 @@ output::QuadSurface make_surface(const interface::InterfaceLayout& l) {
              {"opening_shear", "m (magnitude)"},
              {"traction_normal", "Pa"},
              {"traction_shear", "Pa (magnitude)"},
+             {"displacement", "m (of the mid-surface from its reference position)"},
              {"delaminated", "0/1 (damage 1)"}};
   return s;
 }
@@ -101,6 +105,8 @@ void InterfaceFrameWriter::fill(Block& b, const solver::Solver& solver) {
   auto& f = s.point_fields;
   auto& delaminated = s.point_int_fields[0].values;
   l.vertex_positions(x, s.points.data());
+  std::vector<double>& u = f[6].values;
+  for (std::size_t i = 0; i < u.size(); ++i) u[i] = s.points[i] - b.reference[i];
   for (std::size_t v = 0; v < l.num_vertices(); ++v) {
     const cohesive::PairSample& q = b.samples[std::size_t(l.vertex_point[v])];
     f[0].values[v] = q.damage;

@@ -130,7 +130,7 @@ TEST(InterfaceOutput, SeriesHasOneNamedBlockPerInterfaceWithThePrecrackExactly) 
     EXPECT_EQ(g->GetNumberOfPoints(), 9 * 5) << "a pair per node of the 8 x 4 interface grid";
     EXPECT_EQ(g->GetNumberOfCells(), 8 * 4);
     for (const char* f : {"damage", "mode_mixity", "opening_normal", "opening_shear", "traction_normal",
-                          "traction_shear", "delaminated"})
+                          "traction_shear", "displacement", "delaminated"})
       EXPECT_TRUE(g->GetPointData()->GetArray(f)) << f;
     EXPECT_TRUE(vtkStringArray::SafeDownCast(g->GetFieldData()->GetAbstractArray("units")));
     // Damage 1 exactly on the pre-crack (closed region), 0 elsewhere; points at the reference
@@ -215,8 +215,8 @@ TEST(InterfaceOutput, CscanShowsTheShallowestDelaminationAndTheUnion) {
   EXPECT_GT(png.size(), 5000u) << "axes, legend and map, not a blank image";
 }
 
-// Openings and tractions as written: the upper side of interface 2 moved rigidly by 0.1 um along
-// x (shear) and z (opening). Below onset ((10/60)^2 + (10/50)^2 < 1) the law is linear:
+// Openings, tractions and the mid-surface's displacement as written: the upper side of interface 2
+// moved rigidly by 0.1 um along x (shear) and z (opening). Below onset ((10/60)^2 + (10/50)^2 < 1) the law is linear:
 // t = CN delta in both directions (CT2CN = 1), and G_II/G_T = Kt ds^2 / (Kn dn^2 + Kt ds^2) = 1/2.
 TEST(InterfaceOutput, OpeningTractionAndMixityOfAKnownSeparation) {
   test::ScratchDir dir;
@@ -235,7 +235,14 @@ TEST(InterfaceOutput, OpeningTractionAndMixityOfAKnownSeparation) {
     auto* g = vtkUnstructuredGrid::SafeDownCast(mb->GetBlock(b));
     const bool moved = b == 1;
     const auto value = [&](const char* f, vtkIdType p) { return g->GetPointData()->GetArray(f)->GetTuple1(p); };
+    vtkDataArray* u = g->GetPointData()->GetArray("displacement");
+    ASSERT_TRUE(u);
     for (vtkIdType p = 0; p < g->GetNumberOfPoints(); ++p) {
+      // The mid-surface moved by half the upper side's motion (the lower side stayed).
+      const double* up = u->GetTuple3(p);
+      EXPECT_NEAR(up[0], moved ? 0.5 * delta : 0.0, 1e-15);
+      EXPECT_EQ(up[1], 0.0);
+      EXPECT_NEAR(up[2], moved ? 0.5 * delta : 0.0, 1e-15);
       if (!moved) {
         EXPECT_EQ(value("opening_normal", p), 0.0);
         continue;
