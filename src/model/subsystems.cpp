@@ -11,21 +11,24 @@ std::vector<Subsystem> subsystems(const Model& model) {
 
   std::set<int> ihq;
   bool elform2 = false, ans = false, viscosity = false;
+  std::size_t one_point = 0, full = 0;  // elements of each family (a scene may mix them: an impact zone)
   std::set<std::string> cards;
   for (const auto& b : model.blocks) {
     if (b.size() == 0) continue;
-    if (b.elform == 1) ihq.insert(b.ihq); else elform2 = true;
+    if (b.elform == 1) ihq.insert(b.ihq), one_point += b.size(); else elform2 = true, full += b.size();
     if (b.elform == -2) ans = true;
     viscosity = viscosity || b.q1 > 0 || b.q2 > 0;
     cards.insert(model.materials[b.material].card);
   }
   std::ostringstream hg;
   for (int i : ihq) hg << (hg.tellp() > 0 ? ", " : "IHQ ") << i;
+  if (!ihq.empty()) hg << " (" << one_point << " one-point elements)";
   list.push_back({"hourglass_control", !ihq.empty(), ihq.empty() ? "no one-point (ELFORM 1) element" : hg.str()});
+  const std::string counted = std::to_string(full) + " elements, ";
   list.push_back({"fully_integrated_elements", elform2,
                   !elform2 ? "no ELFORM 2 part"
-                  : ans    ? "ELFORM 2 / -2, selectively reduced; -2 with assumed natural transverse shear (thin elements)"
-                           : "ELFORM 2, selectively reduced"});
+                  : ans    ? counted + "ELFORM 2 / -2, selectively reduced; -2 with assumed natural transverse shear (thin elements)"
+                           : counted + "ELFORM 2, selectively reduced"});
   list.push_back({"bulk_viscosity", viscosity, viscosity ? "compression only, Q1/Q2 per section" : "Q1 = Q2 = 0"});
   std::ostringstream mats;
   for (const auto& c : cards) mats << (mats.tellp() > 0 ? ", " : "") << c;

@@ -64,7 +64,8 @@ TEST(Cli, CheckReportsModelSubsystemsAndStep) {
   ASSERT_EQ(0, run({"check", scene.string()}, out, err)) << err;
   EXPECT_NE(out.find("nodes: 125, elements: 64"), std::string::npos) << out;
   EXPECT_NE(out.find("[off] contact: left out"), std::string::npos) << out;
-  EXPECT_NE(out.find("[on ] hourglass_control: IHQ 4"), std::string::npos) << out;
+  EXPECT_NE(out.find("[on ] hourglass_control: IHQ 4 (64 one-point elements)"), std::string::npos) << out;
+  EXPECT_NE(out.find("[off] fully_integrated_elements: no ELFORM 2 part"), std::string::npos) << out;
   EXPECT_NE(out.find("stable time step"), std::string::npos) << out;
   EXPECT_NE(out.find("controlling element"), std::string::npos) << out;
   EXPECT_NE(out.find("memory estimate"), std::string::npos) << out;

@@ -54,7 +54,7 @@ std::map<std::string, std::vector<double>> read_history(const std::filesystem::p
 
 TEST(LowVelocityDefault, FreeFlightFirstContactAndEnergyBalance) {
   config::Scene scene = config::load_scene(PLYIMPACT_SOURCE_DIR "/configs/low_velocity_impact.yaml");
-  scene.control.termination_time = 1.0e-4;  // the first 0.1 ms (~4,700 cycles) of the 1.4 ms run
+  scene.control.termination_time = 1.0e-4;  // the first 0.1 ms (~2,200 cycles) of the 5 ms event
   scene.output.interval = 5.0e-5;
   scene.output.history_interval = 1.0e-6;
   const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
