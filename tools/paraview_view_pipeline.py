@@ -37,7 +37,7 @@ DAMAGE_CATEGORIES = [  # value, RGB, label
     (ERODED, (0.10, 0.10, 0.10), "eroded"),
 ]
 INTERFACE_RANGE = (0.0, 1.0)  # interface damage
-NAN_COLOUR = (1.0, 1.0, 1.0)  # C-scan: nothing delaminated there
+NAN_COLOUR = (0.93, 0.93, 0.93)  # C-scan: nothing delaminated there (light grey: the plate shows)
 BACKGROUND = (1.0, 1.0, 1.0)
 LABEL_COLOUR = (0.0, 0.0, 0.0)
 WINDOW_SIZE = (1600, 1000)
