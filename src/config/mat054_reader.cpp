@@ -108,7 +108,7 @@ MatCompositeDamage read_mat054(const Reader& r) {
                 "TFAIL",  "ALPH",   "SOFT",   "FBRT",   "YCFAC",  "DFAILT", "DFAILC", "EFS",    "XC",     "XT",
                 "YC",     "YT",     "SC",     "CRIT",   "BETA",   "PFL",    "EPSF",   "EPSR",   "TSMD",   "SOFT2",
                 "SLIMT1", "SLIMC1", "SLIMT2", "SLIMC2", "SLIMS",  "NCYRED", "SOFTG",  "LCXC",   "LCXT",   "LCYC",
-                "LCYT",   "LCSC",   "DT",     "A",      "D",      "V"});
+                "LCYT",   "LCSC",   "DT",     "A",      "D",      "V",      "erosion_reference_length"});
   const Limits fraction01 = Limits::interval(0, false, 1, false, "the factor");
   MatCompositeDamage m;
   // Card 1-2: elastic constants (all needed by a solid).
@@ -174,6 +174,13 @@ MatCompositeDamage read_mat054(const Reader& r) {
   m.LCYT = static_cast<int>(r.integer_or("LCYT", 0, curve_id));
   m.LCSC = static_cast<int>(r.integer_or("LCSC", 0, curve_id));
   m.DT = r.quantity_or("DT", u::time, 0.0, Limits::non_negative("DT"));
+  m.erosion_reference_length =
+      r.quantity_or("erosion_reference_length", u::length, 0.0,
+                    Limits::non_negative("erosion_reference_length (an element length; 0 = off)"));
+  if (m.erosion_reference_length > 0 && !(m.DFAILT > 0 || m.EFS > 0))
+    r.at("erosion_reference_length", "")
+        .fail("erosion_reference_length scales the erosion strains, and none is set",
+              "DFAILT > 0 (with DFAILC, DFAILM, DFAILS) or EFS > 0, or no erosion_reference_length");
 
   if (const auto bad = unsupported_field(m)) {
     const std::string name = bad->substr(0, bad->find('='));

@@ -43,6 +43,12 @@ struct MatCompositeDamage {
   // Card 9. Strength vs strain-rate curve ids and the rate averaging window (s).
   int LCXC = 0, LCXT = 0, LCYC = 0, LCYT = 0, LCSC = 0;
   double DT = 0;
+  // Not on the LS-DYNA card (a plyimpact extension): the element length (m) at which DFAILT, DFAILC,
+  // DFAILM, DFAILS and EFS hold. An element shorter than it in the ply plane erodes at those strains
+  // times erosion_reference_length / its length, so its elongation at erosion is the reference
+  // element's (docs/theory.md, "Erosion strains and the element length"). 0 = the card's strains in
+  // every element.
+  double erosion_reference_length = 0;
 };
 
 // The first field set to a value this code does not implement, as "NAME=value (reason)", or

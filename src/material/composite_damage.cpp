@@ -165,19 +165,20 @@ CompositeDamageCause erosion_cause(const CompositeDamageParams& p, const double*
                                    const CompositeDamageContext& ctx) {
   using C = CompositeDamageCause;
   const double* e = h + H::kStrain;
+  const double k = ctx.erosion_scale;
   if (p.DFAILT == 0) {
     if (failed(h, H::kFibreTension)) return C::FibreTension;
   } else {
-    if (e[0] >= p.DFAILT) return C::DFAILT;
-    if (p.DFAILC < 0 && e[0] <= p.DFAILC) return C::DFAILC;
-    if (p.DFAILM > 0 && std::abs(e[1]) >= p.DFAILM) return C::DFAILM;
-    if (p.DFAILS > 0 && 0.5 * std::abs(e[3]) >= p.DFAILS) return C::DFAILS;
+    if (e[0] >= p.DFAILT * k) return C::DFAILT;
+    if (p.DFAILC < 0 && e[0] <= p.DFAILC * k) return C::DFAILC;
+    if (p.DFAILM > 0 && std::abs(e[1]) >= p.DFAILM * k) return C::DFAILM;
+    if (p.DFAILS > 0 && 0.5 * std::abs(e[3]) >= p.DFAILS * k) return C::DFAILS;
   }
   if (p.EFS > 0) {
     const double ab = 0.5 * e[3], bc = 0.5 * e[4], ca = 0.5 * e[5];
     const double q = e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[0] * e[1] + e[1] * e[2] + e[2] * e[0] + ab * ab +
                      bc * bc + ca * ca;
-    if (std::sqrt(4.0 / 3.0 * q) >= p.EFS) return C::EFS;
+    if (std::sqrt(4.0 / 3.0 * q) >= p.EFS * k) return C::EFS;
   }
   if (p.EPSF > 0 && p.EPSR < 0 && h[H::kTransverseShearDamage] >= p.TSMD) return C::TransverseShear;
   if (p.TFAIL > 0 && ctx.element_dt > 0) {

@@ -71,6 +71,7 @@ struct CompositeDamageParams {
   double DFAILT = 0, DFAILC = 0, DFAILM = 0, DFAILS = 0, EFS = 0;
   double TFAIL = 0;
   double EPSF = 0, EPSR = 0, TSMD = 0.9;  // TSMD blank -> 0.90 (KW text)
+  double erosion_reference_length = 0;    // m, 0 = off (config::MatCompositeDamage)
 };
 
 // Undamaged state: flags 1, strengths as entered, zero strain, criteria -1.
@@ -80,6 +81,9 @@ struct CompositeDamageContext {
   double element_dt = 0;  // current stable step of the element (s); <= 0: TFAIL not checked
   double initial_dt = 0;  // its step at t = 0 (s), for TFAIL > 0.1
   bool crashfront = false;  // the element shares a node with a deleted element
+  // Factor (>= 1) on DFAILT, DFAILC, DFAILM, DFAILS and EFS for this element: erosion_reference_length
+  // over the element's in-plane length when it is shorter (model::erosion_strain_scale), else 1.
+  double erosion_scale = 1;
 };
 
 struct CompositeDamageResult {

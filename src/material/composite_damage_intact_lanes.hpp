@@ -33,6 +33,7 @@ struct IntactLaneHistory {
   alignas(64) double crashfront[kLanes];
   alignas(64) double shear_damage[kLanes];  // transverse shear damage d (0 when EPSF = 0)
   alignas(64) double element_dt[kLanes], initial_dt[kLanes];  // TFAIL context
+  alignas(64) double erosion_scale[kLanes];  // CompositeDamageContext::erosion_scale
 };
 
 // What it gives back: the new stress (global axes), axes, strain and the four criterion values.
@@ -148,11 +149,12 @@ PLYIMPACT_LANE_KERNEL void composite_intact_lanes(const CompositeDamageParams& p
     event = fc >= 0 ? 1.0 : event;
     event = mt >= 0 ? 1.0 : event;
     event = mc >= 0 ? 1.0 : event;
-    event = e0 >= DFAILT ? 1.0 : event;
-    event = e0 <= DFAILC ? 1.0 : event;
-    event = std::abs(e1) >= DFAILM ? 1.0 : event;
-    event = 0.5 * std::abs(e3) >= DFAILS ? 1.0 : event;
-    event = effective >= EFS ? 1.0 : event;
+    const double k = h.erosion_scale[l];  // >= 1, so a disabled limit stays infinite
+    event = e0 >= DFAILT * k ? 1.0 : event;
+    event = e0 <= DFAILC * k ? 1.0 : event;
+    event = std::abs(e1) >= DFAILM * k ? 1.0 : event;
+    event = 0.5 * std::abs(e3) >= DFAILS * k ? 1.0 : event;
+    event = effective >= EFS * k ? 1.0 : event;
     event = edt > 0 && edt < TFAIL_STEP ? 1.0 : event;
     event = edt > 0 && idt > 0 && ratio < TFAIL_RATIO ? 1.0 : event;
     out.event[l] = event;

@@ -33,11 +33,12 @@ class CompositeDamageLanes {
   static constexpr bool kElementRotation = true;  // multi-point families call begin_element
   static constexpr bool kIncremental = true;
   // history: (elements * points, kCompositeDamageHistory); axes: (elements, 9) current axes;
-  // initial_dt: (elements) element step at t = 0 (TFAIL ratio); erosion_base + cause is reported.
+  // initial_dt: (elements) element step at t = 0 (TFAIL ratio); erosion_scale: (elements) factor on
+  // the erosion strains (CompositeDamageContext), or null for 1; erosion_base + cause is reported.
   CompositeDamageLanes(const CompositeDamageParams& p, double* history, double* axes, const double* initial_dt,
-                       int erosion_base)
-      : p_(p), history_(history), axes_(axes), initial_dt_(initial_dt), base_(erosion_base),
-        intact_lanes_(composite_intact_lanes_apply(p)) {}
+                       const double* erosion_scale, int erosion_base)
+      : p_(p), history_(history), axes_(axes), initial_dt_(initial_dt), erosion_scale_(erosion_scale),
+        base_(erosion_base), intact_lanes_(composite_intact_lanes_apply(p)) {}
 
   PLYIMPACT_LANE_KERNEL void update(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) {
     if (!intact_lanes_) {
@@ -58,6 +59,7 @@ class CompositeDamageLanes {
       h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
       h.element_dt[l] = p.dt > 0 ? p.element_dt[l] : 0.0;
       h.initial_dt[l] = initial_dt_[e];
+      h.erosion_scale[l] = scale(e);
       intact[l] = composite_damage_intact(hl) ? 1.0 : 0.0;
     }
     IntactLaneResult r;
@@ -92,6 +94,7 @@ class CompositeDamageLanes {
     ctx_ = CompositeDamageContext{};
     ctx_.element_dt = dt > 0 ? element_dt : 0.0;
     ctx_.initial_dt = initial_dt_[e];
+    ctx_.erosion_scale = scale(e);
   }
   int update_point(const Point& p, double s[6], double* history) const {
     const auto res = composite_point_update(p_, qo_, qn_, p.D, p.dt, ctx_, s, history);
@@ -119,6 +122,7 @@ class CompositeDamageLanes {
         h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
         h.element_dt[l] = ctx_.element_dt;
         h.initial_dt[l] = ctx_.initial_dt;
+        h.erosion_scale[l] = ctx_.erosion_scale;
         intact[l] = composite_damage_intact(hl);
       }
       composite_intact_lanes(p_, Qo, R, s_old, D, dt, h, r);
@@ -141,6 +145,7 @@ class CompositeDamageLanes {
   }
 
  private:
+  double scale(Index e) const { return erosion_scale_ ? erosion_scale_[e] : 1.0; }
   // The general point update of lane l (composite_point_update).
   void update_lane(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes], int l) {
     for (int i = 0; i < 6; ++i) s[i][l] = 0;
@@ -157,6 +162,7 @@ class CompositeDamageLanes {
     CompositeDamageContext ctx;
     ctx.element_dt = p.dt > 0 ? p.element_dt[l] : 0.0;
     ctx.initial_dt = initial_dt_[e];
+    ctx.erosion_scale = scale(e);
     const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl, h);
     const int lost = composite_damage_lost_components(h);
     if (lost != lost_before) lost_change_[l] = lost;
@@ -169,6 +175,7 @@ class CompositeDamageLanes {
   double* history_;
   double* axes_;
   const double* initial_dt_;
+  const double* erosion_scale_;
   int base_;
   bool intact_lanes_;
   int lost_change_[kLanes] = {};

@@ -109,6 +109,7 @@ material::CompositeDamageParams composite_damage_params(const config::MatComposi
   p.DFAILT = m.DFAILT, p.DFAILC = m.DFAILC, p.DFAILM = m.DFAILM, p.DFAILS = m.DFAILS, p.EFS = m.EFS;
   p.TFAIL = m.TFAIL;
   p.EPSF = m.EPSF, p.EPSR = m.EPSR, p.TSMD = m.TSMD > 0 ? m.TSMD : 0.9;
+  p.erosion_reference_length = m.erosion_reference_length;
   return p;
 }
 

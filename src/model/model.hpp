@@ -97,6 +97,9 @@ struct ElementBlock {
   // Gauss points either side of the mid-surface, element::ans_layer), for the F-bar of
   // total-Lagrangian materials; empty otherwise.
   std::vector<double> layer_volume0;
+  // (num_elements) *MAT_054 with erosion_reference_length: the factor on the element's erosion
+  // strains (erosion_strain_scale); empty = 1 for every element.
+  std::vector<double> erosion_scale;
   std::size_t size() const { return element_id.size(); }
   bool fully_integrated() const { return elform == 2 || elform == -2; }
   int points() const { return fully_integrated() ? 8 : 1; }

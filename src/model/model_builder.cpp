@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "element/hex8.hpp"
 #include "element/hex8_ans.hpp"
+#include "model/erosion_scale.hpp"
 #include "model/material_builder.hpp"
 #include "model/mesh_conversion.hpp"
 #include "model/model.hpp"
@@ -200,6 +201,11 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
           model.orientations.push_back(o);
         }
         block.orientation[e] = it->second;
+        const double reference = mat.kind == MaterialKind::CompositeDamage ? mat.composite.erosion_reference_length : 0;
+        if (reference > 0) {
+          block.erosion_scale.resize(block.size(), 1.0);
+          block.erosion_scale[e] = erosion_strain_scale(reference, ply_plane_length(x, volume, axes));
+        }
       }
     }
   }

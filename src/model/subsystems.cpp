@@ -1,9 +1,38 @@
 #include "model/subsystems.hpp"
 
+#include <algorithm>
 #include <set>
 #include <sstream>
 
 namespace plyimpact::model {
+
+namespace {
+
+// Which elements erode at scaled strains (erosion_reference_length) and by how much.
+Subsystem erosion_length_scaling(const Model& model) {
+  std::size_t scaled = 0, elements = 0;
+  double largest = 1;
+  std::set<std::string> names;
+  for (const auto& b : model.blocks) {
+    if (b.erosion_scale.empty()) continue;
+    elements += b.size();
+    names.insert(model.materials[b.material].name);
+    for (double k : b.erosion_scale)
+      if (k > 1) ++scaled, largest = std::max(largest, k);
+  }
+  if (elements == 0) return {"erosion_length_scaling", false, "left out: no *MAT_054 with erosion_reference_length"};
+  std::ostringstream s;
+  if (scaled == 0)
+    s << "all " << elements << " elements at least their reference length: the card's DFAIL*/EFS (";
+  else
+    s << scaled << " of " << elements << " elements shorter than their reference length erode at up to " << largest
+      << " x the card's DFAIL*/EFS (";
+  for (auto it = names.begin(); it != names.end(); ++it) s << (it == names.begin() ? "" : ", ") << *it;
+  s << ")";
+  return {"erosion_length_scaling", true, s.str()};
+}
+
+}  // namespace
 
 std::vector<Subsystem> subsystems(const Model& model) {
   std::vector<Subsystem> list;
@@ -48,6 +77,7 @@ std::vector<Subsystem> subsystems(const Model& model) {
   if (model.control.erode_tsmin > 0) eroding += std::string(eroding.empty() ? "" : ", ") + "time step below erode_tsmin";
   list.push_back({"erosion", !eroding.empty(),
                   eroding.empty() ? "left out: no material with a failure criterion" : "elements can erode: " + eroding});
+  list.push_back(erosion_length_scaling(model));
   return list;
 }
 

@@ -36,6 +36,7 @@ void with_material(const model::Model& model, const model::ElementBlock& blk, Bl
       return f(material::PlasticityLanes(mat.plastic, st.history.data(), int(ErosionCause::PlasticStrain)));
     case model::MaterialKind::CompositeDamage:
       return f(material::CompositeDamageLanes(mat.composite, st.history.data(), st.axes.data(), st.initial_dt.data(),
+                                              blk.erosion_scale.empty() ? nullptr : blk.erosion_scale.data(),
                                               int(ErosionCause::CompositeBase)));
     case model::MaterialKind::JohnsonCook:
       return f(material::JohnsonCookLanes(mat.johnson_cook, st.history.data(), int(ErosionCause::PlasticStrain)));

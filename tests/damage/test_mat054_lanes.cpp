@@ -4,7 +4,7 @@
 // code of every lane must be bit-identical (the lane kernel repeats the general update's
 // operations in the same order; any difference is a defect, not round-off to tolerate). The
 // cards cover CRIT 54 and 55, BETA 0 and 1, ALPH > 0, strain erosion on and off, EFS and TFAIL
-// with crashfront softening.
+// with crashfront softening; half the points have their erosion strains scaled (erosion_scale).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,7 +20,7 @@ namespace plyimpact::test {
 namespace {
 
 struct Lanes {
-  std::vector<double> history, axes, initial_dt;
+  std::vector<double> history, axes, initial_dt, erosion_scale;
 };
 
 // A rotation about a random axis by `angle` (Rodrigues), row-major.
@@ -48,6 +48,7 @@ std::pair<int, int> compare_random_points(const config::MatCompositeDamage& card
   a.history.resize(std::size_t(n) * kH);
   a.axes.resize(std::size_t(n) * 9);
   a.initial_dt.resize(n);
+  a.erosion_scale.resize(n);
   std::vector<double> stress(std::size_t(n) * 6), D(std::size_t(n) * 6), R(std::size_t(n) * 9), edt(n);
   const double dt = 1e-7;
   for (int e = 0; e < n; ++e) {
@@ -69,6 +70,9 @@ std::pair<int, int> compare_random_points(const config::MatCompositeDamage& card
     for (int i = 0; i < 6; ++i) D[6 * std::size_t(e) + i] = 2e4 * u(rng);  // up to 2e-3 strain per step
     rotation(rng, 1e-3 * u(rng), &R[9 * std::size_t(e)]);
     a.initial_dt[e] = 4e-8;
+    // Half the elements shorter than an erosion reference length: their limits up to three times
+    // the card's, so lanes between the card's limit and the scaled one stay in the fast path.
+    a.erosion_scale[e] = pick(rng) < 0.5 ? 1.0 : 1.0 + 2.0 * pick(rng);
     edt[e] = 4e-8 * (0.05 + pick(rng));
   }
   Lanes b = a;  // reference copy for the general update
@@ -88,7 +92,8 @@ std::pair<int, int> compare_random_points(const config::MatCompositeDamage& card
       dte[l] = edt[e];
     }
     int erode[kLanes] = {};
-    material::CompositeDamageLanes lanes(p, a.history.data(), a.axes.data(), a.initial_dt.data(), 10);
+    material::CompositeDamageLanes lanes(p, a.history.data(), a.axes.data(), a.initial_dt.data(),
+                                         a.erosion_scale.data(), 10);
     lanes.update(material::LanePoint{elem, kLanes, ok, dt, Dl, trD, Rl, Jx, dte}, s_old, s_new, erode);
     for (int l = 0; l < kLanes; ++l) {
       const Index e = elem[l];
@@ -102,6 +107,7 @@ std::pair<int, int> compare_random_points(const config::MatCompositeDamage& card
       material::CompositeDamageContext ctx;
       ctx.element_dt = edt[e];
       ctx.initial_dt = b.initial_dt[e];
+      ctx.erosion_scale = b.erosion_scale[e];
       double crit_before[4];
       std::copy_n(hb + H::kCriteria, 4, crit_before);
       const auto res = material::composite_point_update(p, &b.axes[9 * std::size_t(e)], Qn, Dp, dt, ctx, sl, hb);

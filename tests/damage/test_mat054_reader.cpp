@@ -188,6 +188,17 @@ TEST(Mat054Reader, BadValuesAreRefusedInTheHouseFormat) {
   expect_error(no_xt, {"materials.ply.XT", "missing required key 'XT'"});
 }
 
+TEST(Mat054Reader, ErosionReferenceLengthIsALengthAndNeedsAnErosionStrain) {
+  expect_rel(read(with("erosion_reference_length", "2.5")).erosion_reference_length, 2.5e-3);  // mm
+  expect_rel(read(with("erosion_reference_length", "0.25 cm")).erosion_reference_length, 2.5e-3);
+  EXPECT_EQ(read(kSeedCard).erosion_reference_length, 0.0);  // off unless given
+  expect_error(with("erosion_reference_length", "-1"),
+               {"card.yaml:", "materials.ply.erosion_reference_length", "an element length"});
+  std::string no_strains = with("DFAILT", "0.0");
+  no_strains = no_strains + "    erosion_reference_length: 2.5\n";
+  expect_error(no_strains, {"materials.ply.erosion_reference_length", "none is set", "DFAILT > 0"});
+}
+
 TEST(Mat054Reader, UnsupportedFieldNamesTheFirstOffendingField) {
   MatCompositeDamage m = test::t800_card();
   EXPECT_FALSE(unsupported_field(m).has_value());
