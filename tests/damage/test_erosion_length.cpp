@@ -12,6 +12,7 @@
 
 #include "../core/support.hpp"
 #include "model/erosion_scale.hpp"
+#include "model/subsystems.hpp"
 
 namespace plyimpact {
 namespace {
@@ -83,6 +84,25 @@ TEST_P(ErosionLength, WithoutAReferenceLengthTheOpeningShrinksWithTheElement) {
   const double fine = opening_at_erosion(test::model_from_yaml(pulled_ply(0.625e-3, elform, false)), 0.625e-3);
   EXPECT_TRUE(test::model_from_yaml(pulled_ply(0.625e-3, elform, false)).blocks[0].erosion_scale.empty());
   EXPECT_NEAR(fine / coarse, 0.25, 0.25 * 5e-3);
+}
+
+TEST(ErosionScale, CheckSaysWhichElementsAreScaled) {
+  const auto find = [](const model::Model& m) {
+    for (const auto& s : model::subsystems(m))
+      if (s.name == "erosion_length_scaling") return s;
+    ADD_FAILURE() << "no erosion_length_scaling subsystem";
+    return model::Subsystem{};
+  };
+  const auto fine = find(test::model_from_yaml(pulled_ply(0.625e-3, 1, true)));
+  EXPECT_TRUE(fine.active);
+  EXPECT_NE(fine.detail.find("1 of 1 elements"), std::string::npos) << fine.detail;
+  EXPECT_NE(fine.detail.find("up to 4 x"), std::string::npos) << fine.detail;
+  const auto coarse = find(test::model_from_yaml(pulled_ply(5e-3, 1, true)));
+  EXPECT_TRUE(coarse.active);
+  EXPECT_NE(coarse.detail.find("at least their reference length"), std::string::npos) << coarse.detail;
+  const auto off = find(test::model_from_yaml(pulled_ply(0.625e-3, 1, false)));
+  EXPECT_FALSE(off.active);
+  EXPECT_NE(off.detail.find("left out"), std::string::npos) << off.detail;
 }
 
 INSTANTIATE_TEST_SUITE_P(Elform, ErosionLength, ::testing::Values(1, -2),
