@@ -98,7 +98,7 @@ struct PointFrame {
 
 CohesiveElements::CohesiveElements(const TractionLawParams& params, CohesiveElementsSpec spec, const double* x_ref,
                                    const double* nodal_mass)
-    : law_(make_traction_law(params)),
+    : laws_(params, spec.nodes.size() / 8, spec.nfls, spec.sfls),
       quad_(spec.integration == CohesiveIntegration::Gauss ? &kGauss : &kNewtonCotes),
       nodes_(std::move(spec.nodes)) {
   if (nodes_.size() % 8) throw InputError("cohesive elements: the node list is not a multiple of 8");
@@ -200,7 +200,7 @@ void CohesiveElements::point_positions(const double* x, double* out) const {
     point_kinematics(*quad_, c, g, fr, u);
     PointHistory h = history_.load(p);
     PointResponse r;
-    traction_update(law_, u, h, r);
+    traction_update(laws_.of(e), u, h, r);
     history_.store(p, h);
     const double area = point_area_[p];
     const double* t = r.traction;
@@ -250,7 +250,7 @@ void CohesiveElements::set_nodal_mass(const double* nodal_mass) {
   stable_step_element_ = -1;
   for (std::size_t e = 0; e < num_elements_; ++e)
     for (int a = 0; a < 4; ++a) {
-      const double k = law_.k_max * corner_area_[kPoints * e + a];
+      const double k = laws_.card().k_max * corner_area_[kPoints * e + a];
       const double omega_sq = k * (1 / nodal_mass[nodes_[8 * e + a]] + 1 / nodal_mass[nodes_[8 * e + 4 + a]]);
       const double dt = 2 / std::sqrt(omega_sq);
       if (dt < stable_step_) {
@@ -269,7 +269,7 @@ void CohesiveElements::sample(const double* x, PairSample* out) const {
       PointFrame fr;
       PairSample& s = out[p];
       point_kinematics(*quad_, c, g, fr, s.opening);
-      sample_point(law_, history_.load(p), s);
+      sample_point(laws_.of(e), history_.load(p), s);
     }
   }
 }

@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <vector>
 
+#include "cohesive/law_table.hpp"
 #include "cohesive/point_histories.hpp"
 #include "cohesive/point_sample.hpp"
 #include "cohesive/traction_law.hpp"
@@ -43,6 +44,9 @@ struct CohesiveElementsSpec {
   // (num_elements, 8): lower face counter-clockwise seen from the upper ply, then the upper node
   // over each lower node in the same order (LS-DYNA's ELFORM 19 numbering).
   std::vector<Index> nodes;
+  // Pa: each element's own peak tractions in place of the law's T (NFLS) and S (SFLS), e.g. lowered
+  // so that the process zone spans a number of elements (law_parameters.hpp); both empty: the law's.
+  std::vector<double> nfls, sfls;
 };
 
 class CohesiveElements {
@@ -69,7 +73,9 @@ class CohesiveElements {
 
   std::size_t size() const { return num_elements_; }
   std::size_t num_points() const { return kPoints * num_elements_; }
-  const TractionLaw& law() const { return law_; }
+  const TractionLaw& law() const { return laws_.card(); }                     // the card's
+  const TractionLaw& law(std::size_t element) const { return laws_.of(element); }  // with its strengths
+  const LawTable& laws() const { return laws_; }
   const std::vector<Index>& nodes() const { return nodes_; }        // (num_elements, 8)
   const std::vector<double>& damage() const { return history_.damage(); }  // (num_elements, 4)
   double point_area(std::size_t point) const { return point_area_[point]; }  // m^2, A_g
@@ -93,7 +99,7 @@ class CohesiveElements {
   void element_forces(const double* x, std::size_t e, double* fe, double& elastic, double& dissipated,
                       double& separated);
 
-  TractionLaw law_;
+  LawTable laws_;  // (num_elements) the law of each element
   const QuadTables* quad_ = nullptr;  // the integration rule's shape functions at its points
   std::size_t num_elements_ = 0;
   std::vector<Index> nodes_;          // (num_elements, 8)

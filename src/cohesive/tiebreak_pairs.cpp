@@ -104,11 +104,13 @@ void TiebreakPairs::frames_and_openings(const double* __restrict normals, const 
   }
 }
 
-void TiebreakPairs::intact_pairs(const TractionLaw& law, const double* __restrict damage,
+void TiebreakPairs::intact_pairs(const TractionLaw& law, const double* __restrict elastic_limit,
+                                 const double* __restrict damage,
                                  double* __restrict max_opening, const PairConst* __restrict pairs, std::size_t begin,
                                  std::size_t m, const double (*__restrict fo)[kChunk], double (*__restrict out)[kChunk],
                                  unsigned char* __restrict elastic) {
-  const double kn = law.kn, kt = law.kt, limit = law.elastic_limit;
+  // K_n and K_t are the card's for every pair (only the strengths differ between pairs).
+  const double kn = law.kn, kt = law.kt;
 #pragma omp simd
   for (std::size_t j = 0; j < m; ++j) {
     const std::size_t p = begin + j;
@@ -117,7 +119,7 @@ void TiebreakPairs::intact_pairs(const TractionLaw& law, const double* __restric
     const double us_sq = shear_opening_sq(u1, u2);
     const double open = opening_norm(ui, us_sq), mo = max_opening[p];
     // Undamaged (keep = 1: the stiffnesses are K_n and K_t exactly) and no damage to grow.
-    const bool take = damage[p] == 0 && (open <= mo || open <= limit);
+    const bool take = damage[p] == 0 && (open <= mo || open <= elastic_limit[p]);
     max_opening[p] = take && open > mo ? open : mo;
     const double t0 = kn * u0, t1 = kt * u1, t2 = kt * u2, area = pairs[p].area;
     for (int i = 0; i < 3; ++i) out[i][j] = frame_force(area, t0, t1, t2, fo[i][j], fo[3 + i][j], fo[6 + i][j]);
@@ -177,7 +179,9 @@ void TiebreakPairs::set_normal_refresh_interval(int passes) {
 
 TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec spec, const double* x_ref,
                              const double* nodal_mass)
-    : law_(make_traction_law(params)), faces_(std::move(spec.faces)), release_depth_(spec.release_depth) {
+    : laws_(params, spec.lower.size(), spec.nfls, spec.sfls),
+      faces_(std::move(spec.faces)),
+      release_depth_(spec.release_depth) {
   if (!(release_depth_ > 0))
     throw InputError(msg() << "tiebreak pairs: release depth " << release_depth_ << " m; allowed a positive depth");
   const std::size_t n = spec.lower.size();
@@ -231,6 +235,8 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
     perpendicular(&normals_[3 * p], pairs_[p].t1_ref);
   }
 
+  elastic_limit_.resize(n);
+  for (std::size_t p = 0; p < n; ++p) elastic_limit_[p] = laws_.of(p).elastic_limit;
   history_.assign(n);
   released_.assign(n, 0);
   point_elastic_.assign(n, 0.0);
@@ -297,7 +303,7 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
       alignas(64) double fo[12][kChunk], fi[4][kChunk];
       alignas(64) unsigned char intact[kChunk];
       frames_and_openings(normals_.data(), pairs_.data(), x, begin, end - begin, fo);
-      intact_pairs(law_, history_.damage().data(), history_.max_opening_data(), pairs_.data(), begin, end - begin, fo,
+      intact_pairs(laws_.card(), elastic_limit_.data(), history_.damage().data(), history_.max_opening_data(), pairs_.data(), begin, end - begin, fo,
                    fi, intact);
       for (std::size_t p = begin; p < end; ++p) {
         const std::size_t j = p - begin;
@@ -320,7 +326,7 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
                                    ? std::max(0.0, point_elastic_[p] - h.stick_energy)
                                    : 0.0;
         PointResponse r;
-        traction_update(law_, u, h, r);
+        traction_update(laws_.of(p), u, h, r);
         r.dissipated_increment += dropped;
         point_elastic_[p] = r.elastic_energy;
         history_.store(p, h);
@@ -348,7 +354,7 @@ void TiebreakPairs::set_nodal_mass(const double* nodal_mass) {
   stable_step_pair_ = -1;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     const auto& c = pairs_[p];
-    const double k = law_.k_max * c.area;
+    const double k = laws_.card().k_max * c.area;  // the strengths do not change the stiffness
     const double omega_sq = k * (1 / nodal_mass[c.lower] + 1 / nodal_mass[c.upper]);
     const double dt = 2 / std::sqrt(omega_sq);
     if (dt < stable_step_) {
@@ -369,7 +375,7 @@ void TiebreakPairs::sample(const double* x, PairSample* out) const {
       for (int i = 0; i < 3; ++i) s.opening[i] = fo[9 + i][p - begin];
       const PointHistory h = history_.load(p);
       open_beyond_reach(h, pairs_[p].area, release_depth_, released_[p] != 0, s.opening);
-      sample_point(law_, h, s);
+      sample_point(laws_.of(p), h, s);
     }
   }
 }

@@ -25,6 +25,7 @@
 #include <limits>
 #include <vector>
 
+#include "cohesive/law_table.hpp"
 #include "cohesive/point_histories.hpp"
 #include "cohesive/point_sample.hpp"
 #include "cohesive/traction_law.hpp"
@@ -44,6 +45,9 @@ struct TiebreakPairsSpec {
   // m: a separated pair pressed deeper than this is taken as open (released), as a penalty contact
   // releases a node behind its release depth; infinite: never.
   double release_depth = std::numeric_limits<double>::infinity();
+  // Pa: each pair's own peak tractions in place of the law's NFLS and SFLS (e.g. lowered so that the
+  // process zone spans a number of segments, law_parameters.hpp); both empty: the law's.
+  std::vector<double> nfls, sfls;
 };
 
 // Interface faces as quads of pair indices from quads of lower-side node indices (faces whose normal
@@ -77,7 +81,9 @@ class TiebreakPairs {
   void set_nodal_mass(const double* nodal_mass);
 
   std::size_t size() const { return pairs_.size(); }
-  const TractionLaw& law() const { return law_; }
+  const TractionLaw& law() const { return laws_.card(); }                  // the card's
+  const TractionLaw& law(std::size_t pair) const { return laws_.of(pair); }  // with the pair's strengths
+  const LawTable& laws() const { return laws_; }
   const std::vector<double>& damage() const { return history_.damage(); }  // (num_pairs)
   double area(std::size_t pair) const { return pairs_[pair].area; }
   // Initial history of a pre-crack: the pair starts separated.
@@ -120,7 +126,8 @@ class TiebreakPairs {
   // its force on the lower node (out[0..2][j]) and its elastic energy per unit area (out[3][j]),
   // through the helpers traction_update and the general path use (so to the last bit the law's);
   // elastic[j] = 0 for the others (their history keeps its values), which take the general law.
-  static void intact_pairs(const TractionLaw& law, const double* __restrict damage, double* __restrict max_opening,
+  static void intact_pairs(const TractionLaw& law, const double* __restrict elastic_limit,
+                           const double* __restrict damage, double* __restrict max_opening,
                            const PairConst* __restrict pairs, std::size_t begin, std::size_t m,
                            const double (*__restrict fo)[kChunk], double (*__restrict out)[kChunk],
                            unsigned char* __restrict elastic);
@@ -130,7 +137,8 @@ class TiebreakPairs {
   void normals_from_faces(std::size_t begin, std::size_t end);
   void build_face_adjacency(const double* x_ref, bool areas_from_faces);
 
-  TractionLaw law_;
+  LawTable laws_;                          // (num_pairs) the law of each pair
+  std::vector<double> elastic_limit_;      // (num_pairs) m, its law's elastic_limit, for the SIMD path
   AlignedVector<PairConst, 64> pairs_;
   std::vector<double> normals_;            // (num_pairs, 3) unit normals: given, or from the faces
   std::vector<Index> faces_;               // (num_faces, 4)

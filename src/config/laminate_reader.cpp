@@ -188,11 +188,12 @@ void read_precrack(const Reader& r, const LaminateSpec& lam, InterfaceLawSpec& s
   spec.has_precrack = true;
 }
 
-const std::initializer_list<std::string_view> kLawKeys = {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN",
-                                                           "ERATES", "CN",   "CT2CN", "FS", "precrack"};
+const std::initializer_list<std::string_view> kLawKeys = {"OPTION", "NFLS", "SFLS", "PARAM", "ERATEN",     "ERATES",
+                                                           "CN",     "CT2CN", "FS", "precrack", "process_zone_elements"};
 // *MAT_138 card fields of `model: cohesive` (RO as mass per unit area: the card's ROFLG = 1).
-const std::initializer_list<std::string_view> kMat138Keys = {"T",   "S",   "XMU", "GIC", "GIIC",    "EN",
-                                                             "ET",  "UND", "UTD", "RO",  "INTFAIL", "precrack"};
+const std::initializer_list<std::string_view> kMat138Keys = {"T",   "S",   "XMU", "GIC",     "GIIC",     "EN",
+                                                             "ET",  "UND", "UTD", "RO",      "INTFAIL",  "precrack",
+                                                             "process_zone_elements"};
 
 bool listed(const std::initializer_list<std::string_view>& keys, std::string_view key) {
   return std::find(keys.begin(), keys.end(), key) != keys.end();
@@ -220,6 +221,13 @@ void read_mat138_keys(const Reader& r, cohesive::Mat138Params& p) {
   if (r.has("INTFAIL")) p.INTFAIL = r.quantity("INTFAIL", u::dimensionless, Limits::interval(-4, false, 4, false, "INTFAIL"));
 }
 
+// process_zone_elements: at least one segment (Turon et al. 2007 recommend three or more).
+void read_process_zone_elements(const Reader& r, InterfaceLawSpec& spec) {
+  if (r.has("process_zone_elements"))
+    spec.process_zone_elements = r.quantity("process_zone_elements", u::dimensionless,
+                                            Limits::at_least(1, "process_zone_elements (segments in the process zone)"));
+}
+
 // Keys of the other model in `r` are refused, naming the model they belong to.
 void refuse_other_model_keys(const Reader& r, bool cohesive) {
   const auto& other = cohesive ? kLawKeys : kMat138Keys;
@@ -239,7 +247,7 @@ void read_interface_laws(const Reader& r, const std::vector<double>& angles, Lam
   r.require_map("{select: all | angle-change | none | [numbers], model: merged | tiebreak | cohesive, law keys ...}");
   r.allow_keys({"select", "model", "OPTION", "NFLS", "SFLS", "PARAM", "ERATEN", "ERATES", "CN", "CT2CN", "FS",
                 "precrack", "per_interface", "T", "S", "XMU", "GIC", "GIIC", "EN", "ET", "UND", "UTD", "RO",
-                "INTFAIL"});
+                "INTFAIL", "process_zone_elements"});
   lam.delaminating = read_interfaces(r.at("select", "all, angle-change, none, or a list of interface numbers"), angles);
   lam.interface_law.assign(lam.delaminating.size(), std::nullopt);
   const std::string model =
@@ -261,6 +269,7 @@ void read_interface_laws(const Reader& r, const std::vector<double>& angles, Lam
       read_mat138_keys(from, spec.mat138);
     else
       read_law_keys(from, spec.law);
+    read_process_zone_elements(from, spec);
   };
   read_keys(r, base);
   if (const auto p = r.find("precrack")) read_precrack(*p, lam, base);
@@ -297,6 +306,14 @@ void read_interface_laws(const Reader& r, const std::vector<double>& angles, Lam
       spec.law = cohesive::traction_law_of(spec.mat138);
     } else {
       cohesive::require_valid_traction_law(spec.law, where);
+    }
+    if (spec.process_zone_elements > 0 && spec.law.option == cohesive::TiebreakOption::StressCcrit) {
+      const bool own = it != overrides.end() && it->second.has("process_zone_elements");
+      (own ? it->second : r)
+          .at("process_zone_elements", "")
+          .fail("process_zone_elements with OPTION 6, whose energy is set by NFLS and CCRIT (lowering NFLS would "
+                "change it)",
+                "OPTION 7 or 9, or model: cohesive, whose energies ERATEN/ERATES (GIC/GIIC) the lowered strengths keep");
     }
     lam.interface_law[i] = spec;
   }

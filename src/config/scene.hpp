@@ -237,6 +237,10 @@ struct InterfaceLawSpec {
   cohesive::Mat138Params mat138;            // Cohesive only: the card as given
   bool has_precrack = false;
   double precrack_x[2] = {0, 0}, precrack_y[2] = {0, 0};  // m, region of the plate (y: whole width if not given)
+  // process_zone_elements (a plyimpact key, not on the LS-DYNA cards): each segment's NFLS and SFLS
+  // lowered to the strength whose cohesive zone spans this many segments of its length (Turon et al.
+  // 2007; cohesive::process_zone_strength), where that is below the card's; 0 = the card's everywhere.
+  double process_zone_elements = 0;
   SourceLocation where;
 };
 

@@ -8,6 +8,7 @@
 #include <omp.h>
 
 #include "element/hex8.hpp"
+#include "interface/process_zone.hpp"
 
 namespace plyimpact::interface {
 
@@ -92,6 +93,9 @@ cohesive::CohesiveElements make_interface_cohesive(const model::Model& model, co
       spec.nodes[8 * e + a] = itf.lower_nodes[pair];
       spec.nodes[8 * e + 4 + a] = itf.upper_nodes[pair];
     }
+  SegmentStrengths strengths = segment_strengths(model, itf);
+  spec.nfls = std::move(strengths.nfls);
+  spec.sfls = std::move(strengths.sfls);
   cohesive::CohesiveElements elements(itf.tiebreak->law, std::move(spec), model.X.data(), model.mass.data());
   const auto& law = *itf.tiebreak;
   if (law.has_precrack) {
@@ -131,6 +135,9 @@ cohesive::TiebreakPairs make_interface_pairs(const model::Model& model, const mo
   spec.faces = cohesive::pair_faces_from_segments(itf.lower_nodes, itf.lower_segments);
   spec.normals = itf.normal;
   spec.release_depth = interface_release_depth(model, itf);
+  SegmentStrengths strengths = pair_strengths(model, itf);
+  spec.nfls = std::move(strengths.nfls);
+  spec.sfls = std::move(strengths.sfls);
   cohesive::TiebreakPairs pairs(itf.tiebreak->law, std::move(spec), model.X.data(), model.mass.data());
   const std::vector<char> separated = precrack_pairs(model, itf);
   for (std::size_t p = 0; p < separated.size(); ++p)
@@ -164,12 +171,14 @@ model::Subsystem InterfaceTiebreaks::describe(const model::Model& model) {
     if (is_cohesive(itf)) {
       const cohesive::CohesiveElements kernel = make_interface_cohesive(model, itf);
       law = mat138_text(itf.tiebreak->mat138, itf.tiebreak->law);
+      if (const auto t = strengths_text(segment_strengths(model, itf), itf, "elements"); !t.empty()) law += ", " + t;
       for (std::size_t p = 0; p < kernel.num_points(); ++p)
         if (kernel.damage()[p] >= 1) precrack += kernel.point_area(p);
       step = kernel.stable_step();
     } else {
       const cohesive::TiebreakPairs kernel = make_interface_pairs(model, itf);
       law = tiebreak_law_text(itf.tiebreak->law);
+      if (const auto t = strengths_text(pair_strengths(model, itf), itf, "pairs"); !t.empty()) law += ", " + t;
       for (std::size_t p = 0; p < kernel.size(); ++p)
         if (kernel.damage()[p] >= 1) precrack += kernel.area(p);
       step = kernel.stable_step();

@@ -141,6 +141,7 @@ Material make_material(const config::MaterialSpec& spec) {
     m.density = cd->RO;
     m.composite = composite_damage_params(*cd, spec.where);
     m.c_material = m.composite.C;
+    m.modulus_c = cd->EC;
     m.wave_modulus = m.composite.wave_modulus;  // undamaged stiffness, as LS-DYNA (docs/theory.md section 2)
     m.bulk_modulus = reuss_bulk_modulus(*cd, m.wave_modulus);
     m.axes = material_axes_of(cd->axes);
@@ -152,6 +153,7 @@ Material make_material(const config::MaterialSpec& spec) {
     m.kind = MaterialKind::OrthotropicElastic;
     m.density = ortho.RO;
     m.c_material = orthotropic_stiffness(ortho, spec.where);
+    m.modulus_c = ortho.EC;
     m.wave_modulus = material::max_wave_modulus(m.c_material);
     m.bulk_modulus = reuss_bulk_modulus(ortho, m.wave_modulus);
     m.axes = material_axes_of(ortho.axes);
@@ -160,6 +162,8 @@ Material make_material(const config::MaterialSpec& spec) {
                                          "AOPT "
                                       << m.axes.AOPT << "; give a ply angle with parts.<name>.beta instead");
   }
+  if (m.modulus_c == 0 && m.iso.mu > 0)  // isotropic: E = mu (3 lambda + 2 mu) / (lambda + mu)
+    m.modulus_c = m.iso.mu * (3 * m.iso.lambda + 2 * m.iso.mu) / (m.iso.lambda + m.iso.mu);
   m.wave_speed = std::sqrt(m.wave_modulus / m.density);
   return m;
 }

@@ -42,6 +42,9 @@ struct Material {
   // Bulk modulus K for the SOFT 0 contact stiffness (Pa): E / (3 (1 - 2 nu)) for MAT_001/MAT_020,
   // the Reuss bound 1 / sum_{i,j<=3} S_ij for MAT_002 (our choice; LS-DYNA's is not published).
   double bulk_modulus = 0;
+  // Young's modulus along the material c axis (Pa): EC of an orthotropic card, E of an isotropic one.
+  // Through a ply's thickness (its c axis); the process-zone length of its interfaces uses it.
+  double modulus_c = 0;
   material::IsotropicConstants iso;    // MAT_001
   material::Stiffness6 c_material{};   // MAT_002, in material axes
   material::MaterialAxes axes;         // MAT_002, MAT_054
@@ -207,6 +210,9 @@ struct Interface {
   // its depth below the laminate's top face (m), the face the impactor strikes.
   double lower_angle = 0, upper_angle = 0;
   double depth = 0;
+  // Pa: the smaller through-thickness modulus (Material::modulus_c) of its two plies, the E of the
+  // process-zone length M E G_c / tau^2 (cohesive::process_zone_strength); 0 when not a laminate's.
+  double transverse_modulus = 0;
   std::size_t num_pairs() const { return lower_nodes.size(); }
 };
 

@@ -295,6 +295,10 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
       added.lower_angle = plies[std::size_t(itf.lower_ply)].angle;
       added.upper_angle = plies[std::size_t(itf.upper_ply)].angle;
       for (std::size_t p = std::size_t(itf.upper_ply); p < plies.size(); ++p) added.depth += plies[p].thickness;
+      const auto modulus_c = [&](int ply) {
+        return model.materials[std::size_t(index_by_name(model.materials, plies[std::size_t(ply)].material))].modulus_c;
+      };
+      added.transverse_modulus = std::min(modulus_c(itf.lower_ply), modulus_c(itf.upper_ply));
     }
   }
   // *MAT_138 elements with RO (mass per unit mid-surface area, the card's ROFLG = 1) add RO A to the

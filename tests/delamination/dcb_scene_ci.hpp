@@ -24,7 +24,9 @@ constexpr double kArm = 1.5e-3, kWidth = 2e-3, kA0 = 25e-3;  // m: arm thickness
 constexpr double kSegment = 1e-3;                            // m, the scene's element_size
 constexpr double kGIc = 765, kGIIc = 1250;                   // J/m^2, ERATEN and ERATES of the scene
 
-inline std::vector<config::SceneOverride> ci_overrides(double nfls_mpa, double sfls_mpa) {
+// `extra`: further --set arguments (e.g. "laminate.interfaces.process_zone_elements=3").
+inline std::vector<config::SceneOverride> ci_overrides(double nfls_mpa, double sfls_mpa,
+                                                       const std::vector<std::string>& extra = {}) {
   std::vector<config::SceneOverride> o;
   for (const char* s : {"laminate.width=2", "laminate.length=60", "node_sets.block_top.box.max=[0.01, 3, 3.1]",
                         "node_sets.block_bottom.box.max=[0.01, 3, 1.49]", "laminate.interfaces.precrack.x=[0, 25]",
@@ -35,6 +37,7 @@ inline std::vector<config::SceneOverride> ci_overrides(double nfls_mpa, double s
     o.push_back(config::parse_set_argument(s));
   o.push_back(config::parse_set_argument("laminate.interfaces.NFLS=" + std::to_string(nfls_mpa) + " MPa"));
   o.push_back(config::parse_set_argument("laminate.interfaces.SFLS=" + std::to_string(sfls_mpa) + " MPa"));
+  for (const auto& e : extra) o.push_back(config::parse_set_argument(e));
   return o;
 }
 
@@ -45,10 +48,11 @@ struct CiRun {
 };
 
 // Runs the scene at CI size into PLYIMPACT_BINARY_DIR/<dir>; returns its history.csv.
-inline CiRun run_dcb_ci(const std::string& dir, double nfls_mpa, double sfls_mpa) {
+inline CiRun run_dcb_ci(const std::string& dir, double nfls_mpa, double sfls_mpa,
+                        const std::vector<std::string>& extra = {}) {
   const auto start = std::chrono::steady_clock::now();
   const std::string path = std::string(PLYIMPACT_SOURCE_DIR) + "/configs/dcb_t800s_m21.yaml";
-  const config::Scene scene = config::load_scene(path, ci_overrides(nfls_mpa, sfls_mpa));
+  const config::Scene scene = config::load_scene(path, ci_overrides(nfls_mpa, sfls_mpa, extra));
   const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
   run::RunOptions options;
   options.output_dir = std::filesystem::path(PLYIMPACT_BINARY_DIR) / "test_output" / dir;

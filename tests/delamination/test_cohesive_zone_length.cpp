@@ -4,8 +4,11 @@
 // segments) run twice:
 //   - the seed's full strengths NFLS = SFLS = 60 MPa: l_cz = 9 pi / 32 E22 G_Ic / NFLS^2 = 1.6 mm,
 //     1.6 segments;
-//   - scale_strengths_to_length with N = 3: NFLS = sqrt(9 pi E22 G_Ic / (32 N l_e)) = 43.8 MPa
-//     (SFLS 56.0 MPa from ERATES), the zone then spans 3 segments, G_Ic unchanged.
+//   - the scene's own key process_zone_elements: 3, which lowers each pair's strengths to
+//     NFLS = sqrt(9 pi E22 G_Ic / (32 N l_e)) = 43.8 MPa (SFLS 56.0 MPa from ERATES) with l_e the
+//     length of its segments and E22 the plies' EC: the zone then spans 3 segments, G_Ic unchanged.
+//     Every pair of the model built from it is checked to carry exactly scale_strengths_to_length's
+//     values (the 1 mm segments are all alike).
 // Independent answer: the LEFM load at which the pre-crack (a0 plus half a segment, the traction-free
 // length) propagates, corrected beam theory P_c = b / (a + Delta) sqrt(E11 h^3 G_Ic / 12)
 // (Williams 1989; test_dcb.cpp). The peak is the load averaged over 0.1 ms (21 history rows), which
@@ -21,6 +24,7 @@
 
 #include "cohesive/law_parameters.hpp"
 #include "dcb_scene_ci.hpp"
+#include "interface/interface_tiebreaks.hpp"
 #include "fracture/dcb_record.hpp"
 
 namespace plyimpact {
@@ -53,8 +57,22 @@ TEST(CohesiveZoneLength, TooFewSegmentsInTheZoneOverpredictThePeakLoad) {
   law.ERATES = kGIIc;
   law.CN = 1e14;
   const cohesive::TractionLawParams scaled = cohesive::scale_strengths_to_length(law, kE22, kSegment * kSegment, 3);
+  const std::vector<std::string> key{"laminate.interfaces.process_zone_elements=3"};
+  {
+    const config::Scene scene = config::load_scene(std::string(PLYIMPACT_SOURCE_DIR) + "/configs/dcb_t800s_m21.yaml",
+                                                   ci_overrides(60, 60, key));
+    const model::Model model = model::build_model(scene, mesh::mesh_scene(scene));
+    ASSERT_EQ(model.interfaces.size(), 1u);
+    EXPECT_EQ(model.interfaces[0].transverse_modulus, kE22);
+    const cohesive::TiebreakPairs pairs = interface::make_interface_pairs(model, model.interfaces[0]);
+    ASSERT_EQ(pairs.laws().num_lowered(), pairs.size());
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      ASSERT_NEAR(pairs.laws().nfls(p), scaled.NFLS, 1e-9 * scaled.NFLS) << "pair " << p;
+      ASSERT_NEAR(pairs.laws().sfls(p), scaled.SFLS, 1e-9 * scaled.SFLS) << "pair " << p;
+    }
+  }
   const Peak full = windowed_peak(run_dcb_ci("czl_full", 60, 60));
-  const Peak turon = windowed_peak(run_dcb_ci("czl_scaled", scaled.NFLS / 1e6, scaled.SFLS / 1e6));
+  const Peak turon = windowed_peak(run_dcb_ci("czl_scaled", 60, 60, key));
   const double p_c = critical_load(kA0 + kSegment / 2);
   const double lcz_full = 9 * 3.141592653589793 / 32 * kE22 * kGIc / (60e6 * 60e6);
   const double e_full = full.load / p_c - 1, e_turon = turon.load / p_c - 1;

@@ -4,8 +4,9 @@
 //
 // Strengths: the scene's 1 mm segments hold T07's cohesive zone (l_cz = 9 pi / 32 E22 G_Ic / NFLS^2
 // = 1.6 mm at NFLS = 60 MPa) in under two segments, which overshoots the peak load by ~40 %
-// (test_cohesive_zone_length); the run therefore uses scale_strengths_to_length with N = 3 elements
-// in the zone (NFLS 43.8 MPa, SFLS 56.0 MPa), G_Ic and CN unchanged, as an analyst would.
+// (test_cohesive_zone_length); the run therefore gives the zone three segments with the scene key
+// process_zone_elements: 3 (NFLS 43.8 MPa, SFLS 56.0 MPa on every pair), G_Ic and CN unchanged, as an
+// analyst would.
 //
 // Independent answers: the scene's ERATEN = 765 J/m^2, which every separated pair dissipates exactly
 // in pure mode I (test_mixed_mode_law); corrected beam theory (Williams 1989, test_dcb.cpp) for the
@@ -56,8 +57,8 @@ TEST(DcbScene, D5528ReductionOfTheSimulatedHistoryRecoversERATEN) {
   law.ERATEN = kGIc;
   law.ERATES = kGIIc;
   law.CN = 1e14;
-  law = cohesive::scale_strengths_to_length(law, kE22, kSegment * kSegment, 3);
-  const CiRun run = run_dcb_ci("dcb_scene_d5528", law.NFLS / 1e6, law.SFLS / 1e6);
+  law = cohesive::scale_strengths_to_length(law, kE22, kSegment * kSegment, 3);  // what the key gives, for the log
+  const CiRun run = run_dcb_ci("dcb_scene_d5528", 60, 60, {"laminate.interfaces.process_zone_elements=3"});
   ASSERT_TRUE(run.completed);
 
   const fracture::DcbRecord record = fracture::read_dcb_record(run.history.string(), {}, {});

@@ -275,7 +275,11 @@ TEST(TiebreakKernel, FacesGiveTheNormalAndTheTributaryAreas) {
 // partial one), loaded, then partly unloaded (openings below their maximum, which are above the
 // elastic limit: the lanes must keep the maximum) and partly pressed; every fifth pair starts
 // separated. Energies: the same sums in the same order, to 1e-12.
-TEST(TiebreakKernel, PairsInSimdLanesGetTheLawsOwnResults) {
+// Pairs of one kernel in SIMD lanes and on the general path, against traction_update point by
+// point: forces bit for bit, damage and energy. With `own_strengths` every pair has its own NFLS and
+// SFLS (0.3 to 1 of the card's, as process_zone_elements gives a graded mesh), and the reference is
+// a law made from those strengths alone, so a lane that took a neighbour's elastic limit or law fails.
+void check_simd_lanes(bool own_strengths) {
   const int np = 2500;
   TiebreakPairsSpec s;
   std::vector<double> x0(2 * np * 3, 0.0), mass(2 * np, 1e-7);
@@ -287,18 +291,28 @@ TEST(TiebreakKernel, PairsInSimdLanesGetTheLawsOwnResults) {
     x0[3 * p] = x0[3 * (np + p)] = 1e-3 * p;
   }
   const auto params = test::table_8_6_option9();
+  std::vector<TractionLaw> own(np, make_traction_law(params));
+  if (own_strengths)
+    for (int p = 0; p < np; ++p) {
+      TractionLawParams q = params;
+      q.NFLS *= 0.3 + 0.7 * ((p * 53) % 97) / 96.0;
+      q.SFLS *= 0.3 + 0.7 * ((p * 29) % 89) / 88.0;
+      s.nfls.push_back(q.NFLS);
+      s.sfls.push_back(q.SFLS);
+      own[std::size_t(p)] = make_traction_law(q);
+    }
   TiebreakPairs pairs(params, s, x0.data(), mass.data());
-  const TractionLaw& law = pairs.law();
+  if (own_strengths) EXPECT_GT(pairs.laws().num_laws(), 1000u);
   std::vector<PointHistory> h(np);
   for (int p = 0; p < np; p += 5) {
     pairs.separate_pair(std::size_t(p));
     h[std::size_t(p)].damage = 1;
   }
-  const double onset = law.delta_n0;  // 0.6 um
   for (int pass = 0; pass < 2; ++pass) {
     SCOPED_TRACE(pass == 0 ? "loading" : "unloading");
     std::vector<double> x = x0, f(x.size(), 0.0);
     for (int p = 0; p < np; ++p) {  // from 0.1 to 2 onsets, every direction; the second pass 0.7 of it
+      const double onset = own[std::size_t(p)].delta_n0;  // 0.6 um at the card's NFLS
       const double scale = (pass == 0 ? 1.0 : 0.7) * onset * (0.1 + 1.9 * ((p * 37) % 101) / 100.0);
       const double d[3] = {scale * std::sin(0.7 * p), scale * std::cos(1.3 * p), scale * std::sin(0.3 * p + 1)};
       for (int i = 0; i < 3; ++i) x[3 * (np + p) + i] += d[i];
@@ -310,7 +324,7 @@ TEST(TiebreakKernel, PairsInSimdLanesGetTheLawsOwnResults) {
       const double d[3] = {x[up] - x[lo] - 0.0, x[up + 1] - x[lo + 1] - 0.0, x[up + 2] - x[lo + 2] - 0.0};
       const double u[3] = {d[2], d[1], -d[0]};
       PointResponse r;
-      traction_update(law, u, h[std::size_t(p)], r);
+      traction_update(own[std::size_t(p)], u, h[std::size_t(p)], r);
       const double area = pairs.area(std::size_t(p));
       const double expected[3] = {area * -r.traction[2], area * r.traction[1], area * r.traction[0]};
       for (int i = 0; i < 3; ++i) {
@@ -328,6 +342,9 @@ TEST(TiebreakKernel, PairsInSimdLanesGetTheLawsOwnResults) {
     EXPECT_LT(damaged, np / 2);
   }
 }
+
+TEST(TiebreakKernel, PairsInSimdLanesGetTheLawsOwnResults) { check_simd_lanes(false); }
+TEST(TiebreakKernel, PairsWithTheirOwnStrengthsGetTheirOwnLawsResults) { check_simd_lanes(true); }
 
 TEST(TiebreakKernel, OneAndTwoThreadsGiveBitIdenticalResults) {
   const int n = 64, np = n * n;

@@ -1,0 +1,93 @@
+#include "interface/process_zone.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "cohesive/law_parameters.hpp"
+
+namespace plyimpact::interface {
+
+namespace {
+
+// Reference area of each lower segment of `itf` (a quad: half the cross product of its diagonals).
+std::vector<double> segment_areas(const model::Model& model, const model::Interface& itf) {
+  const std::size_t ns = itf.lower_segments.size() / 4;
+  std::vector<double> area(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    const double* x[4];
+    for (int a = 0; a < 4; ++a) x[a] = &model.X[3 * std::size_t(itf.lower_segments[4 * s + a])];
+    double d1[3], d2[3];
+    for (int i = 0; i < 3; ++i) {
+      d1[i] = x[2][i] - x[0][i];
+      d2[i] = x[3][i] - x[1][i];
+    }
+    const double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
+    area[s] = 0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+  }
+  return area;
+}
+
+// The strengths of items whose characteristic areas are `areas`.
+SegmentStrengths strengths_for(const model::Interface& itf, const std::vector<double>& areas) {
+  SegmentStrengths out;
+  const auto& spec = *itf.tiebreak;
+  out.nfls.resize(areas.size());
+  out.sfls.resize(areas.size());
+  for (std::size_t k = 0; k < areas.size(); ++k) {
+    const cohesive::TractionLawParams p =
+        cohesive::scale_strengths_to_length(spec.law, itf.transverse_modulus, areas[k], spec.process_zone_elements);
+    out.nfls[k] = p.NFLS;
+    out.sfls[k] = p.SFLS;
+  }
+  return out;
+}
+
+bool active(const model::Interface& itf) {
+  return itf.tiebreak && itf.tiebreak->process_zone_elements > 0 && itf.transverse_modulus > 0;
+}
+
+}  // namespace
+
+SegmentStrengths pair_strengths(const model::Model& model, const model::Interface& itf) {
+  if (!active(itf)) return {};
+  const std::vector<double> seg = segment_areas(model, itf);
+  // Pair of each lower node: the segments name nodes, the pairs are indexed by their lower node.
+  std::vector<Index> pair_of(model.num_nodes(), -1);
+  for (std::size_t p = 0; p < itf.num_pairs(); ++p) pair_of[std::size_t(itf.lower_nodes[p])] = Index(p);
+  std::vector<double> sum(itf.num_pairs(), 0.0), count(itf.num_pairs(), 0.0);
+  for (std::size_t s = 0; s < seg.size(); ++s)
+    for (int a = 0; a < 4; ++a) {
+      const Index p = pair_of[std::size_t(itf.lower_segments[4 * s + a])];
+      if (p < 0) continue;
+      sum[std::size_t(p)] += seg[s];
+      count[std::size_t(p)] += 1;
+    }
+  std::vector<double> mean(itf.num_pairs());
+  for (std::size_t p = 0; p < mean.size(); ++p) mean[p] = count[p] > 0 ? sum[p] / count[p] : itf.area[p];
+  return strengths_for(itf, mean);
+}
+
+SegmentStrengths segment_strengths(const model::Model& model, const model::Interface& itf) {
+  if (!active(itf)) return {};
+  return strengths_for(itf, segment_areas(model, itf));
+}
+
+std::string strengths_text(const SegmentStrengths& s, const model::Interface& itf, const char* items) {
+  if (s.nfls.empty()) return "";
+  const auto& law = itf.tiebreak->law;
+  std::size_t lowered = 0;
+  for (std::size_t k = 0; k < s.nfls.size(); ++k)
+    if (s.nfls[k] < law.NFLS || s.sfls[k] < law.SFLS) ++lowered;
+  const auto [n_lo, n_hi] = std::minmax_element(s.nfls.begin(), s.nfls.end());
+  const auto [s_lo, s_hi] = std::minmax_element(s.sfls.begin(), s.sfls.end());
+  std::ostringstream t;
+  t << std::setprecision(3) << "strengths for " << itf.tiebreak->process_zone_elements << " segments in the process zone (E "
+    << itf.transverse_modulus * 1e-9 << " GPa): NFLS " << *n_lo * 1e-6 << "-" << *n_hi * 1e-6 << " MPa, SFLS "
+    << *s_lo * 1e-6 << "-" << *s_hi * 1e-6 << " MPa, lowered at " << lowered << " of " << s.nfls.size() << " "
+    << items;
+  return t.str();
+}
+
+}  // namespace plyimpact::interface
