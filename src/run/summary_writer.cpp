@@ -80,6 +80,19 @@ output::Json timing_json(const RunTiming& t) {
   return j;
 }
 
+// m^3: reference volume of the deleted elements. Unlike their count, which grows as the elements
+// shrink, it compares between meshes (what a mesh study of a perforation should converge).
+double eroded_volume(const model::Model& model, const solver::Solver& solver) {
+  double v = 0;
+  for (std::size_t b = 0; b < model.blocks.size(); ++b) {
+    const auto& blk = model.blocks[b];
+    if (blk.rigid) continue;
+    for (std::size_t e = 0; e < blk.size(); ++e)
+      if (!solver.element_alive(int(b), Index(e))) v += blk.volume0[e];
+  }
+  return v;
+}
+
 }  // namespace
 
 void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
@@ -148,6 +161,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     erosion["eroded_elements"] = solver->state().eroded_elements;
     erosion["eroded_energy"] = solver->state().eroded_energy;
     erosion["eroded_hourglass_energy"] = solver->state().eroded_hourglass_energy;
+    erosion["eroded_volume"] = eroded_volume(model, *solver);
     output::Json by_part = output::Json::array();
     for (const auto& c : solver->state().erosion) {
       output::Json entry = output::Json::object();

@@ -206,6 +206,21 @@ Values eroded_elements(const RunRecord& r) {
   return out;
 }
 
+// A number the summary's erosion block carries (0 when a run eroded nothing and omits it).
+double erosion_number(const RunRecord& r, const char* key) {
+  const output::Json* e = erosion(r);
+  return e->find(key) ? e->find(key)->as_number() : 0.0;
+}
+
+Values eroded_volume(const RunRecord& r) {
+  const output::Json* e = erosion(r);
+  if (!e->find("eroded_volume"))
+    throw NotAvailable("not in this run's summary.json (written by an older plyimpact: run the case again)");
+  return {{"eroded_volume", erosion_number(r, "eroded_volume")}};
+}
+
+Values eroded_energy(const RunRecord& r) { return {{"eroded_energy", erosion_number(r, "eroded_energy")}}; }
+
 // Largest value reached by each delaminated_area* column (total and per interface).
 Values delaminated_area(const RunRecord& r) {
   require_rows(r);
@@ -294,6 +309,10 @@ constexpr QuantityDefinition kQuantities[] = {
      max_impactor_displacement},
     {"permanent_indentation", "m", "final rigid-impactor travel after rebound", permanent_indentation},
     {"eroded_elements", "1", "eroded elements at the end, total and eroded_elements_<cause>", eroded_elements},
+    {"eroded_volume", "m^3",
+     "reference volume of the eroded elements at the end (compares between meshes, unlike their count)",
+     eroded_volume},
+    {"eroded_energy", "J", "internal and hourglass energy the eroded elements held when deleted", eroded_energy},
     {"delaminated_area", "m^2", "largest delaminated area, total and per interface (delaminated_area* columns)",
      delaminated_area},
     {"first_damage_time", "s", "first sample with an eroded element or a delaminated area", first_damage_time},

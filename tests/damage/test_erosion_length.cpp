@@ -7,10 +7,17 @@
 // limit when its length is h exp(k DFAILT).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "../core/support.hpp"
+#include "output/json_reader.hpp"
+#include "run/run.hpp"
 #include "model/erosion_scale.hpp"
 #include "model/subsystems.hpp"
 
@@ -103,6 +110,30 @@ TEST(ErosionScale, CheckSaysWhichElementsAreScaled) {
   const auto off = find(test::model_from_yaml(pulled_ply(0.625e-3, 1, false)));
   EXPECT_FALSE(off.active);
   EXPECT_NE(off.detail.find("left out"), std::string::npos) << off.detail;
+}
+
+// The run summary's eroded volume is the reference volume of the deleted elements (here the one
+// pulled element, h x h x t to round-off): the quantity a zone study compares across meshes, where
+// the eroded count grows as the elements shrink.
+TEST(ErosionSummary, ErodedVolumeIsTheReferenceVolumeOfTheDeletedElements) {
+  const double h = 1.25e-3;
+  model::Model model = test::model_from_yaml(pulled_ply(h, 1, true));
+  model.control.termination_time = 1e-4;  // erosion at ~4e-5 s (k DFAILT L_ref / 1 m/s)
+  const auto dir = std::filesystem::temp_directory_path() / ("plyimpact_eroded_volume_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  run::RunOptions options;
+  options.output_dir = dir;
+  const run::RunReport report = run::run_model(model, options);
+  ASSERT_TRUE(report.completed) << report.stop_reason;
+  std::ifstream in(dir / "summary.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const output::Json summary = output::parse_json(text.str(), "summary.json");
+  const output::Json* erosion = summary.find("erosion");
+  ASSERT_NE(erosion, nullptr);
+  EXPECT_EQ(erosion->find("eroded_elements")->as_number(), 1);
+  EXPECT_NEAR(erosion->find("eroded_volume")->as_number(), h * h * kPly, 1e-12 * h * h * kPly);
+  std::filesystem::remove_all(dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Elform, ErosionLength, ::testing::Values(1, -2),

@@ -36,6 +36,8 @@ RunRecord tup_record() {
   r.summary["wall_seconds"] = 12.5;
   r.summary["elements"] = 7488;
   r.summary["erosion"]["eroded_elements"] = 3;
+  r.summary["erosion"]["eroded_volume"] = 4.5e-9;
+  r.summary["erosion"]["eroded_energy"] = 0.25;
   output::Json by = output::Json::array();
   for (auto [cause, count] : {std::pair{"fibre_tension", 2}, std::pair{"matrix", 1}}) {
     output::Json e = output::Json::object();
@@ -73,6 +75,8 @@ TEST(Quantities, RigidImpactorClosedForm) {
   EXPECT_DOUBLE_EQ(value(r, "eroded_elements"), 3);
   EXPECT_DOUBLE_EQ(value(r, "eroded_elements", "eroded_elements_fibre_tension"), 2);
   EXPECT_DOUBLE_EQ(value(r, "eroded_elements", "eroded_elements_matrix"), 1);
+  EXPECT_DOUBLE_EQ(value(r, "eroded_volume"), 4.5e-9);
+  EXPECT_DOUBLE_EQ(value(r, "eroded_energy"), 0.25);
 }
 
 // A run's summary carries its own hourglass check (the same-sample rule with the 1 % floor at every
