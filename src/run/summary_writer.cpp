@@ -168,6 +168,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
       entry["part"] = model.parts[c.part].name;
       entry["cause"] = solver::erosion_cause_name(c.cause);
       entry["count"] = c.count;
+      entry["energy"] = c.energy;
       by_part.push_back(entry);
     }
     erosion["by_part_and_cause"] = by_part;

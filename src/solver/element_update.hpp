@@ -26,7 +26,7 @@ struct ChunkResult {
   bool bad_is_nan = false;
   // Elements whose material failed in this pass (to be deleted by the solver), in element order,
   // with their erosion cause (ErosionCause), and the internal + hourglass energy they held.
-  std::vector<std::pair<Index, int>> eroded;
+  std::vector<ErodedElement> eroded;
   double eroded_energy = 0;
   double eroded_hourglass_energy = 0;  // J, the hourglass part of eroded_energy
 };

@@ -22,6 +22,14 @@ enum class ErosionCause : int {
 };
 const char* erosion_cause_name(int cause);
 
+// One element deleted in an element pass: its id, ErosionCause and the internal + hourglass energy
+// it held (J), which the run books per part and cause.
+struct ErodedElement {
+  Index id = 0;
+  int cause = 0;
+  double energy = 0;
+};
+
 // control.erode_tsmin (ERODE/TSMIN): an element whose step fell below the limit is eroded with
 // that cause (it replaces a material failure of the same cycle). Not in the initial evaluation.
 inline int time_step_erosion(int cause, double erode_tsmin, double dt, double element_dt) {
@@ -43,11 +51,12 @@ inline int time_step_erosion(int cause, double erode_tsmin, double dt, double el
 // measures it).
 
 inline void erode_element(BlockState& st, Index e, Index id, int cause, int points,
-                          std::vector<std::pair<Index, int>>& eroded, double& eroded_energy,
+                          std::vector<ErodedElement>& eroded, double& eroded_energy,
                           double& eroded_hourglass) {
   std::fill_n(&st.stress[6 * std::size_t(points) * std::size_t(e)], 6 * points, 0.0);
-  eroded.emplace_back(id, cause);
-  eroded_energy += st.internal_energy[e] + st.hourglass_energy[e];
+  const double held = st.internal_energy[e] + st.hourglass_energy[e];
+  eroded.push_back({id, cause, held});
+  eroded_energy += held;
   eroded_hourglass += st.hourglass_energy[e];
 }
 

@@ -513,9 +513,9 @@ void Solver::check_after_pass(double dt_used) {
   }
   std::vector<Index> eroded;
   for (const auto& r : chunk_results_) {  // chunk order: deterministic
-    for (const auto& [id, cause] : r.eroded) {
-      eroded.push_back(id);
-      count_erosion(id, cause);
+    for (const ErodedElement& el : r.eroded) {
+      eroded.push_back(el.id);
+      count_erosion(el);
     }
     s.eroded_energy += r.eroded_energy;
     s.eroded_hourglass_energy += r.eroded_hourglass_energy;
@@ -569,17 +569,19 @@ std::vector<double> Solver::acceleration() const {
   return a;
 }
 
-void Solver::count_erosion(Index id, int cause) {
+void Solver::count_erosion(const ErodedElement& el) {
   ++state_.eroded_elements;
   int part = 0;
   for (const auto& blk : model_.blocks)
-    if (!blk.element_id.empty() && std::binary_search(blk.element_id.begin(), blk.element_id.end(), id)) part = blk.part;
+    if (!blk.element_id.empty() && std::binary_search(blk.element_id.begin(), blk.element_id.end(), el.id))
+      part = blk.part;
   for (auto& c : state_.erosion)
-    if (c.part == part && c.cause == cause) {
+    if (c.part == part && c.cause == el.cause) {
       ++c.count;
+      c.energy += el.energy;
       return;
     }
-  state_.erosion.push_back({part, cause, 1});
+  state_.erosion.push_back({part, el.cause, 1, el.energy});
 }
 
 void Solver::mark_crashfront(const std::vector<Index>& eroded) {

@@ -97,7 +97,7 @@ class Solver {
   // chunk_preds_ from the schedule (the parallel element pass's order constraints).
   void build_chunk_dependencies();
   void check_after_pass(double dt_used);
-  void count_erosion(Index id, int cause);
+  void count_erosion(const ErodedElement& el);
   // Alive ranges of every chunk from alive_ (after a deletion or reading a state).
   void update_chunk_ranges();
   void mark_crashfront(const std::vector<Index>& eroded);

@@ -43,6 +43,7 @@ struct ErosionCount {
   int part = 0;
   int cause = 0;
   long count = 0;
+  double energy = 0;  // J, the internal + hourglass energy these elements held when deleted
 };
 
 struct State {

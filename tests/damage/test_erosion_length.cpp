@@ -114,7 +114,7 @@ TEST(ErosionScale, CheckSaysWhichElementsAreScaled) {
 
 // The run summary's eroded volume is the reference volume of the deleted elements (here the one
 // pulled element, h x h x t to round-off): the quantity a zone study compares across meshes, where
-// the eroded count grows as the elements shrink.
+// the eroded count grows as the elements shrink. Its energy per part and cause sums to the total.
 TEST(ErosionSummary, ErodedVolumeIsTheReferenceVolumeOfTheDeletedElements) {
   const double h = 1.25e-3;
   model::Model model = test::model_from_yaml(pulled_ply(h, 1, true));
@@ -133,6 +133,12 @@ TEST(ErosionSummary, ErodedVolumeIsTheReferenceVolumeOfTheDeletedElements) {
   ASSERT_NE(erosion, nullptr);
   EXPECT_EQ(erosion->find("eroded_elements")->as_number(), 1);
   EXPECT_NEAR(erosion->find("eroded_volume")->as_number(), h * h * kPly, 1e-12 * h * h * kPly);
+  // The energy per part and cause adds up to the eroded energy (here one entry holds all of it).
+  const double total = erosion->find("eroded_energy")->as_number();
+  double by_cause = 0;
+  for (const auto& entry : erosion->find("by_part_and_cause")->as_array()) by_cause += entry.find("energy")->as_number();
+  EXPECT_GT(total, 0.0);
+  EXPECT_NEAR(by_cause, total, 1e-12 * total);
   std::filesystem::remove_all(dir);
 }
 
