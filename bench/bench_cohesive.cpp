@@ -5,8 +5,9 @@
 // Model: an n x n grid of matching node pairs (0.5 mm spacing) with the seed's Table 8.6 law, the
 // upper nodes opened by a field that grows every cycle on a tenth of the pairs, which soften (the
 // damage branch with the pow of the B-K law every cycle); the rest stay elastic, some in compression. Only apply() is timed; the opening update between passes is not.
-// Usage: bench_cohesive [max_pairs [normals | refresh K]]   ("normals": fixed given normals instead
-// of faces; "refresh K": normals from the faces every K passes).
+// Usage: bench_cohesive [max_pairs [normals | refresh K | strengths]]   ("normals": fixed given
+// normals instead of faces; "refresh K": normals from the faces every K passes; "strengths": every
+// pair its own NFLS and SFLS, 0.3 to 1 of the card's, as process_zone_elements gives a graded mesh).
 #include <omp.h>
 
 #include <algorithm>
@@ -68,6 +69,7 @@ int main(int argc, char** argv) {
   const double max_pairs = argc > 1 ? std::atof(argv[1]) : 1.1e6;
   const bool faces = !(argc > 2 && std::string(argv[2]) == "normals");
   const int refresh = argc > 3 && std::string(argv[2]) == "refresh" ? std::atoi(argv[3]) : 1;
+  const bool own_strengths = argc > 2 && std::string(argv[2]) == "strengths";
   cohesive::TractionLawParams law;
   law.option = cohesive::TiebreakOption::MixedMode;
   law.NFLS = 60e6;
@@ -77,13 +79,18 @@ int main(int argc, char** argv) {
   law.ERATES = 1250;
   law.CN = 1e14;
   law.FS = 0.3;
-  std::printf("# tiebreak pass, OPTION 9 (B-K), %s (refresh every %d passes)\n",
-              faces ? "normals from the interface faces" : "given normals", refresh);
+  std::printf("# tiebreak pass, OPTION 9 (B-K), %s (refresh every %d passes)%s\n",
+              faces ? "normals from the interface faces" : "given normals", refresh,
+              own_strengths ? ", every pair its own strengths" : "");
   std::printf("%10s %8s %14s %12s %14s %12s\n", "pairs", "threads", "median ns/pc", "min ns/pc", "cpu ns/pc", "damaged %");
   for (int n : {100, 316, 1000}) {
     const std::size_t np = std::size_t(n) * n;
     if (double(np) > max_pairs) break;
-    const Grid g = make_grid(n, faces);
+    Grid g = make_grid(n, faces);
+    for (std::size_t p = 0; own_strengths && p < np; ++p) {
+      g.spec.nfls.push_back(law.NFLS * (0.3 + 0.7 * double((p * 53) % 97) / 96.0));
+      g.spec.sfls.push_back(law.SFLS * (0.3 + 0.7 * double((p * 29) % 89) / 88.0));
+    }
     for (int threads : {1, 2}) {
       omp_set_num_threads(threads);
       cohesive::TiebreakPairs pairs(law, g.spec, g.x0.data(), g.mass.data());

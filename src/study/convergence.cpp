@@ -5,11 +5,40 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/error.hpp"
+
 namespace plyimpact::study {
 namespace {
 
 bool is_cost(const std::string& q) {
   return q == "wall_time" || q == "ns_per_element_cycle" || q == "elements" || q == "cycles";
+}
+
+struct Mesh {
+  double h = 0;
+  std::vector<std::size_t> rows;  // its replicates
+};
+
+bool same_size(double a, double b) { return std::abs(a - b) <= 1e-9 * std::max(std::abs(a), std::abs(b)); }
+
+struct Stats {
+  double mean = std::nan(""), range = 0;
+};
+
+// Mean and range of quantity q over the mesh's replicates that have it.
+Stats replicate_stats(const StudyTable& table, const Mesh& m, const std::string& q) {
+  double sum = 0, lo = INFINITY, hi = -INFINITY;
+  int count = 0;
+  for (std::size_t r : m.rows) {
+    const double v = table.rows[r].quantity(q);
+    if (std::isnan(v)) continue;
+    sum += v;
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+    ++count;
+  }
+  if (count == 0) return {};
+  return {sum / count, hi - lo};
 }
 
 double relative_error(double q, double ref) {
@@ -36,27 +65,44 @@ ConvergenceReport analyse_convergence(const StudySpec& spec, const StudyTable& t
   std::size_t p = 0;
   while (spec.parameters[p].key != c.parameter) ++p;
   const auto& values = spec.parameters[p].values;
-  // Finished rows with their h, coarse (large h) first.
-  std::vector<std::pair<double, std::size_t>> meshes;
+  // Finished rows grouped by their h (replicates share one), coarse (large h) first.
+  std::vector<Mesh> meshes;
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const CaseRow& row = table.rows[r];
     if (row.status != "completed" && row.status != "stopped" && row.status != "finished") continue;
     std::size_t v = 0;
     while (v < values.size() && values[v].text != row.values[p]) ++v;
-    meshes.push_back({mesh_size(c, row.values[p], v), r});
+    const double h = mesh_size(c, row.values[p], v);
+    auto same = std::find_if(meshes.begin(), meshes.end(), [&](const Mesh& m) { return same_size(m.h, h); });
+    if (same == meshes.end()) same = meshes.insert(meshes.end(), Mesh{h, {}});
+    same->rows.push_back(r);
   }
-  std::sort(meshes.begin(), meshes.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-  for (const auto& [h, r] : meshes) {
-    rep.cases.push_back(table.rows[r].name);
-    rep.h.push_back(h);
-    rep.wall_time.push_back(table.rows[r].quantity("wall_time"));
+  std::sort(meshes.begin(), meshes.end(), [](const Mesh& a, const Mesh& b) { return a.h > b.h; });
+  for (const Mesh& m : meshes) {
+    std::vector<std::string> names;
+    for (std::size_t r : m.rows) names.push_back(table.rows[r].name);
+    std::string joined;
+    for (const auto& name : names) joined += (joined.empty() ? "" : "+") + name;
+    rep.cases.push_back(joined);
+    rep.case_names.push_back(names);
+    rep.h.push_back(m.h);
+    rep.wall_time.push_back(replicate_stats(table, m, "wall_time").mean);
   }
   const std::size_t n = meshes.size();
   for (const auto& q : table.quantity_columns) {
     if (is_cost(q) || n < 2) continue;
     QuantityConvergence qc;
     qc.quantity = q;
-    for (const auto& [h, r] : meshes) qc.values.push_back(table.rows[r].quantity(q));
+    for (const Mesh& m : meshes) {
+      const Stats st = replicate_stats(table, m, q);
+      qc.values.push_back(st.mean);
+      qc.spread.push_back(st.range);
+    }
+    const double step = std::abs(qc.values[n - 1] - qc.values[n - 2]);
+    const double scatter = std::max(qc.spread[n - 1], qc.spread[n - 2]);
+    if (scatter > 0 && step <= scatter)
+      qc.flags.push_back(msg() << "the two finest meshes differ by " << step << ", less than their replicates' spread "
+                               << scatter << ": the mesh's effect is not resolved");
     for (const auto& [name, value] : c.reference)
       if (name == q) qc.reference = value;
     const double finest = qc.values.back();
@@ -78,9 +124,9 @@ ConvergenceReport analyse_convergence(const StudySpec& spec, const StudyTable& t
 }
 
 std::string convergence_csv(const ConvergenceReport& rep) {
-  std::string out = "case,h,wall_time";
+  std::string out = "case,h,wall_time,replicates";
   for (const auto& q : rep.quantities)
-    for (const char* suffix : {"", "_error_finest", "_error_richardson", "_error_reference"}) {
+    for (const char* suffix : {"", "_spread", "_error_finest", "_error_richardson", "_error_reference"}) {
       out += ',';
       out += q.quantity;
       out += suffix;
@@ -88,12 +134,12 @@ std::string convergence_csv(const ConvergenceReport& rep) {
   out += "\n";
   for (std::size_t i = 0; i < rep.cases.size(); ++i) {
     out += rep.cases[i];
-    for (double v : {rep.h[i], rep.wall_time[i]}) {
+    for (double v : {rep.h[i], rep.wall_time[i], double(rep.case_names[i].size())}) {
       out += ',';
       out += csv_number(v);
     }
     for (const auto& q : rep.quantities)
-      for (double v : {q.values[i], q.error_finest[i], q.error_extrapolated[i], q.error_reference[i]}) {
+      for (double v : {q.values[i], q.spread[i], q.error_finest[i], q.error_extrapolated[i], q.error_reference[i]}) {
         out += ',';
         out += csv_number(v);
       }
@@ -108,7 +154,10 @@ output::Json convergence_json(const ConvergenceReport& rep) {
   output::Json cases = output::Json::array();
   for (std::size_t i = 0; i < rep.cases.size(); ++i) {
     output::Json c = output::Json::object();
-    c["case"] = rep.cases[i];
+    c["case"] = rep.case_names[i].front();
+    output::Json names = output::Json::array();
+    for (const auto& name : rep.case_names[i]) names.push_back(name);
+    c["cases"] = names;
     c["h"] = rep.h[i];
     c["wall_time"] = rep.wall_time[i];
     cases.push_back(c);
@@ -129,6 +178,14 @@ output::Json convergence_json(const ConvergenceReport& rep) {
     } else {
       e["flags"] = output::Json(output::Json::Array{"fewer than three meshes: no extrapolation"});
     }
+    for (const auto& f : q.flags) e["flags"].push_back(f);
+    output::Json means = output::Json::array(), spreads = output::Json::array();
+    for (std::size_t i = 0; i < q.values.size(); ++i) {
+      means.push_back(q.values[i]);
+      spreads.push_back(q.spread[i]);
+    }
+    e["values"] = means;
+    e["spread"] = spreads;
     if (q.reference) e["reference"] = *q.reference;
     qs[q.quantity] = e;
   }

@@ -4,6 +4,12 @@
 // (richardson.hpp: observed order, asymptotic-range flags) and against the study's reference
 // value, beside each case's wall time: what each digit of accuracy costs. Cost quantities (wall
 // time, ns per element-cycle, element and cycle counts) are tabulated, not analysed.
+// Replicates: when the study varies another parameter beside the mesh (a perturbation such as
+// impactor.gap or control.tssfac, combined as a grid), the cases of one mesh are replicates of it.
+// A mesh's value is then their mean, its spread the range (largest minus smallest), and its wall
+// time the mean of one run. An event driven by thresholds (first erosion, onset of delamination)
+// moves by a few per cent under any perturbation; a change between the two finest meshes smaller
+// than their spread is flagged as not resolved by the study, whatever its size.
 #pragma once
 
 #include <optional>
@@ -19,7 +25,9 @@ namespace plyimpact::study {
 
 struct QuantityConvergence {
   std::string quantity;
-  std::vector<double> values;  // per mesh, coarse to fine
+  std::vector<double> values;  // per mesh, coarse to fine (the replicates' mean)
+  std::vector<double> spread;  // per mesh, largest minus smallest replicate (0 for one run)
+  std::vector<std::string> flags;  // replicate flags (beside the Richardson ones)
   std::optional<RichardsonResult> richardson;  // with three or more meshes
   std::optional<double> reference;
   // Relative errors per mesh (|q - q_x| / |q_x|); NaN where undefined (the finest against itself).
@@ -28,16 +36,17 @@ struct QuantityConvergence {
 
 struct ConvergenceReport {
   std::string parameter;
-  std::vector<std::string> cases;  // coarse to fine
-  std::vector<double> h, wall_time;
+  std::vector<std::string> cases;  // coarse to fine; replicates of one mesh joined with '+'
+  std::vector<std::vector<std::string>> case_names;  // per mesh, every replicate's case
+  std::vector<double> h, wall_time;                  // wall_time: mean of one run of the mesh
   std::vector<QuantityConvergence> quantities;
 };
 
 /// Analyses the finished rows of `table` (unfinished meshes are left out).
 ConvergenceReport analyse_convergence(const StudySpec& spec, const StudyTable& table);
 
-/// convergence.csv: case, h, wall_time, then per quantity <q>, <q>_error_finest,
-/// <q>_error_richardson, <q>_error_reference.
+/// convergence.csv: case, h, wall_time, replicates, then per quantity <q>, <q>_spread,
+/// <q>_error_finest, <q>_error_richardson, <q>_error_reference.
 std::string convergence_csv(const ConvergenceReport& report);
 
 output::Json convergence_json(const ConvergenceReport& report);

@@ -120,6 +120,10 @@ void print_convergence(const ConvergenceReport& rep, std::ostream& out) {
     for (std::size_t i = 0; i < q.values.size(); ++i) {
       std::snprintf(buf, sizeof buf, " h %.4g: %.6g (%.3gs)", rep.h[i], q.values[i], rep.wall_time[i]);
       out << buf;
+      if (rep.case_names[i].size() > 1) {
+        std::snprintf(buf, sizeof buf, " [%zu runs, spread %.3g]", rep.case_names[i].size(), q.spread[i]);
+        out << buf;
+      }
     }
     if (q.richardson && q.richardson->extrapolated) {
       std::snprintf(buf, sizeof buf, "; observed order %.3g, extrapolated %.6g", q.richardson->order, q.richardson->value);
@@ -127,6 +131,7 @@ void print_convergence(const ConvergenceReport& rep, std::ostream& out) {
     }
     if (q.richardson)
       for (const auto& f : q.richardson->flags) out << "; FLAG: " << f;
+    for (const auto& f : q.flags) out << "; FLAG: " << f;
     out << "\n";
   }
 }
