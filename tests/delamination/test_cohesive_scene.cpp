@@ -14,6 +14,7 @@
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "interface/interface_tiebreaks.hpp"
+#include "laminate_scene_support.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
 #include "solver/solver.hpp"
@@ -47,19 +48,9 @@ std::string card_with(const std::string& key, const std::string& value) {
   return card;
 }
 
-model::Model build(const std::string& yaml) {
-  const config::Scene s = config::load_scene_from_string(yaml, "coh.yaml");
-  return model::build_model(s, mesh::mesh_scene(s));
-}
+model::Model build(const std::string& yaml) { return test::build_laminate(yaml, "coh.yaml"); }
 
-std::string error_of(const std::string& yaml) {
-  try {
-    build(yaml);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+std::string error_of(const std::string& yaml) { return test::laminate_error(yaml, "coh.yaml"); }
 
 void expect_error(const std::string& yaml, const std::vector<std::string>& parts) {
   const std::string e = error_of(yaml);

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "interface/interface_tiebreaks.hpp"
+#include "laminate_scene_support.hpp"
 #include "model/model.hpp"
 
 namespace plyimpact {
@@ -36,19 +37,9 @@ std::string scene(const std::string& interfaces, const std::string& extra = "") 
 const std::string kLaw = "OPTION: 9, NFLS: 60 MPa, SFLS: 50 MPa, ERATEN: 765 J/m^2, ERATES: 1250 J/m^2, PARAM: 1, "
                          "CN: 100 kN/mm^3, CT2CN: 1";
 
-model::Model build(const std::string& yaml) {
-  const config::Scene s = config::load_scene_from_string(yaml, "itf.yaml");
-  return model::build_model(s, mesh::mesh_scene(s));
-}
+model::Model build(const std::string& yaml) { return test::build_laminate(yaml, "itf.yaml"); }
 
-std::string error_of(const std::string& yaml) {
-  try {
-    build(yaml);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+std::string error_of(const std::string& yaml) { return test::laminate_error(yaml, "itf.yaml"); }
 
 TEST(InterfaceScene, TiebreakKeepsPairsApartWithTheirOwnPlysMass) {
   const model::Model m = build(scene("{select: angle-change, model: tiebreak, " + kLaw + "}"));

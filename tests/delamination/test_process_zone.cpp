@@ -17,6 +17,7 @@
 #include "config/scene_loader.hpp"
 #include "core/error.hpp"
 #include "interface/interface_tiebreaks.hpp"
+#include "laminate_scene_support.hpp"
 #include "mesh/scene_mesher.hpp"
 #include "model/model.hpp"
 
@@ -50,10 +51,7 @@ std::string scene(const std::string& interfaces) {
 const std::string kTiebreak = "{select: all, model: tiebreak, OPTION: 9, NFLS: 60 MPa, SFLS: 50 MPa, ERATEN: 765 J/m^2, "
                               "ERATES: 1250 J/m^2, PARAM: 1, CN: 100 kN/mm^3, CT2CN: 1, process_zone_elements: 3}";
 
-model::Model build(const std::string& yaml) {
-  const config::Scene s = config::load_scene_from_string(yaml, "pz.yaml");
-  return model::build_model(s, mesh::mesh_scene(s));
-}
+model::Model build(const std::string& yaml) { return test::build_laminate(yaml, "pz.yaml"); }
 
 bool in_zone(const double* x, double half) { return std::abs(x[0] - 12e-3) < half && std::abs(x[1] - 6e-3) < half; }
 
@@ -125,14 +123,7 @@ TEST(ProcessZone, WithoutTheKeyEveryPointHasTheCardsStrengths) {
   EXPECT_EQ(pairs.laws().nfls(0), 60e6);
 }
 
-std::string error_of(const std::string& yaml) {
-  try {
-    build(yaml);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
+std::string error_of(const std::string& yaml) { return test::laminate_error(yaml, "pz.yaml"); }
 
 TEST(ProcessZone, BadValuesAreRefusedWithTheKey) {
   std::string below_one = kTiebreak;
