@@ -303,8 +303,8 @@ void TiebreakPairs::apply(const double* x, const double* /*v*/, double* f, doubl
       alignas(64) double fo[12][kChunk], fi[4][kChunk];
       alignas(64) unsigned char intact[kChunk];
       frames_and_openings(normals_.data(), pairs_.data(), x, begin, end - begin, fo);
-      intact_pairs(laws_.card(), elastic_limit_.data(), history_.damage().data(), history_.max_opening_data(), pairs_.data(), begin, end - begin, fo,
-                   fi, intact);
+      intact_pairs(laws_.card(), elastic_limit_.data(), history_.damage().data(), history_.max_opening_data(),
+                   pairs_.data(), begin, end - begin, fo, fi, intact);
       for (std::size_t p = begin; p < end; ++p) {
         const std::size_t j = p - begin;
         const auto& c = pairs_[p];
