@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cohesive/law_parameters.hpp"
+#include "core/error.hpp"
 
 namespace plyimpact::interface {
 
@@ -44,8 +45,15 @@ SegmentStrengths strengths_for(const model::Interface& itf, const std::vector<do
   return out;
 }
 
+// Whether the interface asks for the strengths; refuses the key where no ply modulus is known (an
+// interface that is not a laminate's), rather than leave the card's strengths in silence.
 bool active(const model::Interface& itf) {
-  return itf.tiebreak && itf.tiebreak->process_zone_elements > 0 && itf.transverse_modulus > 0;
+  if (!itf.tiebreak || !(itf.tiebreak->process_zone_elements > 0)) return false;
+  if (!(itf.transverse_modulus > 0))
+    throw InputError(config::at(itf.tiebreak->where)
+                     << "process_zone_elements needs the through-thickness modulus of the plies of interface " << itf.id
+                     << ", which is not known here; allowed on the interfaces of a laminate: section");
+  return true;
 }
 
 }  // namespace
