@@ -6,26 +6,22 @@
 #include <sstream>
 
 #include "cohesive/law_parameters.hpp"
+#include "contact/geometry.hpp"
 #include "core/error.hpp"
 
 namespace plyimpact::interface {
 
 namespace {
 
-// Reference area of each lower segment of `itf` (a quad: half the cross product of its diagonals).
+// Reference area of each lower segment of `itf` (the contact module's bilinear segment area).
 std::vector<double> segment_areas(const model::Model& model, const model::Interface& itf) {
   const std::size_t ns = itf.lower_segments.size() / 4;
   std::vector<double> area(ns);
   for (std::size_t s = 0; s < ns; ++s) {
-    const double* x[4];
-    for (int a = 0; a < 4; ++a) x[a] = &model.X[3 * std::size_t(itf.lower_segments[4 * s + a])];
-    double d1[3], d2[3];
-    for (int i = 0; i < 3; ++i) {
-      d1[i] = x[2][i] - x[0][i];
-      d2[i] = x[3][i] - x[1][i];
-    }
-    const double c[3] = {d1[1] * d2[2] - d1[2] * d2[1], d1[2] * d2[0] - d1[0] * d2[2], d1[0] * d2[1] - d1[1] * d2[0]};
-    area[s] = 0.5 * std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    double xq[12];
+    for (int a = 0; a < 4; ++a)
+      for (int i = 0; i < 3; ++i) xq[3 * a + i] = model.X[3 * std::size_t(itf.lower_segments[4 * s + a]) + i];
+    area[s] = contact::quad_area(xq);
   }
   return area;
 }
