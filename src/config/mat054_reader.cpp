@@ -108,7 +108,8 @@ MatCompositeDamage read_mat054(const Reader& r) {
                 "TFAIL",  "ALPH",   "SOFT",   "FBRT",   "YCFAC",  "DFAILT", "DFAILC", "EFS",    "XC",     "XT",
                 "YC",     "YT",     "SC",     "CRIT",   "BETA",   "PFL",    "EPSF",   "EPSR",   "TSMD",   "SOFT2",
                 "SLIMT1", "SLIMC1", "SLIMT2", "SLIMC2", "SLIMS",  "NCYRED", "SOFTG",  "LCXC",   "LCXT",   "LCYC",
-                "LCYT",   "LCSC",   "DT",     "A",      "D",      "V",      "erosion_reference_length"});
+                "LCYT",   "LCSC",   "DT",     "A",      "D",      "V",      "erosion_reference_length",
+                "erosion_nonlocal"});
   const Limits fraction01 = Limits::interval(0, false, 1, false, "the factor");
   MatCompositeDamage m;
   // Card 1-2: elastic constants (all needed by a solid).
@@ -181,6 +182,11 @@ MatCompositeDamage read_mat054(const Reader& r) {
     r.at("erosion_reference_length", "")
         .fail("erosion_reference_length scales the erosion strains, and none is set",
               "DFAILT > 0 (with DFAILC, DFAILM, DFAILS) or EFS > 0, or no erosion_reference_length");
+  if (const auto n = r.find("erosion_nonlocal")) m.erosion_nonlocal = n->as_choice({"true", "false"}) == "true";
+  if (m.erosion_nonlocal && !(m.erosion_reference_length > 0))
+    r.at("erosion_nonlocal", "")
+        .fail("erosion_nonlocal averages the erosion strains over erosion_reference_length, which is not set",
+              "erosion_reference_length > 0 (an element length), or no erosion_nonlocal");
 
   if (const auto bad = unsupported_field(m)) {
     const std::string name = bad->substr(0, bad->find('='));

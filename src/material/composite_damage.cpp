@@ -161,25 +161,46 @@ void project(const Stiffness6& C, const Box& b, const double trial[6], double ou
   }
 }
 
-CompositeDamageCause erosion_cause(const CompositeDamageParams& p, const double* h,
-                                   const CompositeDamageContext& ctx) {
+// The strain limits (DFAILT, DFAILC, DFAILM, DFAILS, EFS) that strain e (material axes, engineering
+// shear) reaches, as bits 1 << cause.
+int strain_limits_reached(const CompositeDamageParams& p, const double e[6], double k) {
   using C = CompositeDamageCause;
-  const double* e = h + H::kStrain;
-  const double k = ctx.erosion_scale;
-  if (p.DFAILT == 0) {
-    if (failed(h, H::kFibreTension)) return C::FibreTension;
-  } else {
-    if (e[0] >= p.DFAILT * k) return C::DFAILT;
-    if (p.DFAILC < 0 && e[0] <= p.DFAILC * k) return C::DFAILC;
-    if (p.DFAILM > 0 && std::abs(e[1]) >= p.DFAILM * k) return C::DFAILM;
-    if (p.DFAILS > 0 && 0.5 * std::abs(e[3]) >= p.DFAILS * k) return C::DFAILS;
+  const auto bit = [](C c) { return 1 << int(c); };
+  int reached = 0;
+  if (p.DFAILT > 0) {
+    if (e[0] >= p.DFAILT * k) reached |= bit(C::DFAILT);
+    if (p.DFAILC < 0 && e[0] <= p.DFAILC * k) reached |= bit(C::DFAILC);
+    if (p.DFAILM > 0 && std::abs(e[1]) >= p.DFAILM * k) reached |= bit(C::DFAILM);
+    if (p.DFAILS > 0 && 0.5 * std::abs(e[3]) >= p.DFAILS * k) reached |= bit(C::DFAILS);
   }
   if (p.EFS > 0) {
     const double ab = 0.5 * e[3], bc = 0.5 * e[4], ca = 0.5 * e[5];
     const double q = e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[0] * e[1] + e[1] * e[2] + e[2] * e[0] + ab * ab +
                      bc * bc + ca * ca;
-    if (std::sqrt(4.0 / 3.0 * q) >= p.EFS * k) return C::EFS;
+    if (std::sqrt(4.0 / 3.0 * q) >= p.EFS * k) reached |= bit(C::EFS);
   }
+  return reached;
+}
+
+CompositeDamageCause erosion_cause(const CompositeDamageParams& p, const double* h,
+                                   const CompositeDamageContext& ctx) {
+  using C = CompositeDamageCause;
+  const double* e = h + H::kStrain;
+  if (p.DFAILT == 0 && failed(h, H::kFibreTension)) return C::FibreTension;
+  // The scaled limits always erode; with a neighbourhood the card's erode as well where the
+  // neighbourhood's mean strain reaches them (the scaled ones then bound how long a point whose
+  // neighbours strain the other way can survive).
+  int reached = strain_limits_reached(p, e, ctx.erosion_scale);
+  if (ctx.neighbourhood != nullptr && ctx.neighbourhood->has(ctx.element)) {
+    const int card = strain_limits_reached(p, e, 1.0) & ~reached;
+    if (card != 0) {
+      double mean[6];
+      ctx.neighbourhood->mean(ctx.element, e, mean);
+      reached |= card & strain_limits_reached(p, mean, 1.0);
+    }
+  }
+  for (C c : {C::DFAILT, C::DFAILC, C::DFAILM, C::DFAILS, C::EFS})
+    if (reached & (1 << int(c))) return c;
   if (p.EPSF > 0 && p.EPSR < 0 && h[H::kTransverseShearDamage] >= p.TSMD) return C::TransverseShear;
   if (p.TFAIL > 0 && ctx.element_dt > 0) {
     if (p.TFAIL <= 0.1 ? ctx.element_dt < p.TFAIL

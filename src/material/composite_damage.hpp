@@ -7,6 +7,7 @@
 
 #include "material/composite_damage_criteria.hpp"
 #include "material/elastic.hpp"
+#include "material/erosion_neighbourhood.hpp"
 
 namespace plyimpact::material {
 
@@ -72,6 +73,7 @@ struct CompositeDamageParams {
   double TFAIL = 0;
   double EPSF = 0, EPSR = 0, TSMD = 0.9;  // TSMD blank -> 0.90 (KW text)
   double erosion_reference_length = 0;    // m, 0 = off (config::MatCompositeDamage)
+  bool erosion_nonlocal = false;          // config::MatCompositeDamage
 };
 
 // Undamaged state: flags 1, strengths as entered, zero strain, criteria -1.
@@ -84,6 +86,10 @@ struct CompositeDamageContext {
   // Factor (>= 1) on DFAILT, DFAILC, DFAILM, DFAILS and EFS for this element: erosion_reference_length
   // over the element's in-plane length when it is shorter (model::erosion_strain_scale), else 1.
   double erosion_scale = 1;
+  // erosion_nonlocal: the element's neighbourhood (null or without neighbours: its own strain only).
+  // A strain limit then erodes only when the neighbourhood's mean strain passes it as well.
+  const ErosionNeighbourhoodView* neighbourhood = nullptr;
+  Index element = -1;
 };
 
 struct CompositeDamageResult {

@@ -34,11 +34,15 @@ class CompositeDamageLanes {
   static constexpr bool kIncremental = true;
   // history: (elements * points, kCompositeDamageHistory); axes: (elements, 9) current axes;
   // initial_dt: (elements) element step at t = 0 (TFAIL ratio); erosion_scale: (elements) factor on
-  // the erosion strains (CompositeDamageContext), or null for 1; erosion_base + cause is reported.
+  // the erosion strains (CompositeDamageContext), or null for 1; neighbourhood: erosion_nonlocal's
+  // neighbourhoods and strain buffers (null start: none), whose `write` receives each updated
+  // element's mean strain over its `points`; erosion_base + cause is reported.
   CompositeDamageLanes(const CompositeDamageParams& p, double* history, double* axes, const double* initial_dt,
-                       const double* erosion_scale, int erosion_base)
+                       const double* erosion_scale, const ErosionNeighbourhoodView& neighbourhood, int points,
+                       int erosion_base)
       : p_(p), history_(history), axes_(axes), initial_dt_(initial_dt), erosion_scale_(erosion_scale),
-        base_(erosion_base), intact_lanes_(composite_intact_lanes_apply(p)) {}
+        neighbourhood_(neighbourhood), points_(points), base_(erosion_base),
+        intact_lanes_(composite_intact_lanes_apply(p)) {}
 
   PLYIMPACT_LANE_KERNEL void update(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) {
     if (!intact_lanes_) {
@@ -59,7 +63,7 @@ class CompositeDamageLanes {
       h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
       h.element_dt[l] = p.dt > 0 ? p.element_dt[l] : 0.0;
       h.initial_dt[l] = initial_dt_[e];
-      h.erosion_scale[l] = scale(e);
+      h.erosion_scale[l] = neighbourhood_.has(e) ? 1.0 : scale(e);  // card's limits: the mean decides
       intact[l] = composite_damage_intact(hl) ? 1.0 : 0.0;
     }
     IntactLaneResult r;
@@ -83,6 +87,7 @@ class CompositeDamageLanes {
   // The rotated axes of a surviving lane become the element's.
   void commit(Index e, int l) {
     for (int i = 0; i < 9; ++i) axes_[9 * std::size_t(e) + i] = qnew_[i][l];
+    record_strain(e);
   }
 
   // Multi-point families: the element's rotation R (from its mean spin) before its points, the
@@ -95,12 +100,16 @@ class CompositeDamageLanes {
     ctx_.element_dt = dt > 0 ? element_dt : 0.0;
     ctx_.initial_dt = initial_dt_[e];
     ctx_.erosion_scale = scale(e);
+    set_neighbourhood(ctx_, e);
   }
   int update_point(const Point& p, double s[6], double* history) const {
     const auto res = composite_point_update(p_, qo_, qn_, p.D, p.dt, ctx_, s, history);
     return res.erode ? base_ + res.cause : 0;
   }
-  void end_element(Index e) { std::copy_n(qn_, 9, &axes_[9 * std::size_t(e)]); }
+  void end_element(Index e) {
+    std::copy_n(qn_, 9, &axes_[9 * std::size_t(e)]);
+    record_strain(e);
+  }
 
   // Multi-point families, after begin_element: the element's kLanes points at once (lane = point,
   // history rows points_base + lane): intact points in SIMD lanes, the others by the general
@@ -122,7 +131,7 @@ class CompositeDamageLanes {
         h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
         h.element_dt[l] = ctx_.element_dt;
         h.initial_dt[l] = ctx_.initial_dt;
-        h.erosion_scale[l] = ctx_.erosion_scale;
+        h.erosion_scale[l] = ctx_.neighbourhood ? 1.0 : ctx_.erosion_scale;
         intact[l] = composite_damage_intact(hl);
       }
       composite_intact_lanes(p_, Qo, R, s_old, D, dt, h, r);
@@ -146,6 +155,19 @@ class CompositeDamageLanes {
 
  private:
   double scale(Index e) const { return erosion_scale_ ? erosion_scale_[e] : 1.0; }
+  void set_neighbourhood(CompositeDamageContext& ctx, Index e) const {
+    if (neighbourhood_.has(e)) ctx.neighbourhood = &neighbourhood_, ctx.element = e;
+  }
+  // The element's mean strain over its points, for its neighbours' erosion checks in the next pass.
+  void record_strain(Index e) const {
+    if (neighbourhood_.write == nullptr) return;
+    double* out = neighbourhood_.write + 6 * std::size_t(e);
+    const double* h = &history_[std::size_t(e) * std::size_t(points_) * kCompositeDamageHistory];
+    for (int i = 0; i < 6; ++i) out[i] = 0;
+    for (int g = 0; g < points_; ++g)
+      for (int i = 0; i < 6; ++i) out[i] += h[std::size_t(g) * kCompositeDamageHistory + composite_history::kStrain + i];
+    for (int i = 0; i < 6; ++i) out[i] /= points_;
+  }
   // The general point update of lane l (composite_point_update).
   void update_lane(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes], int l) {
     for (int i = 0; i < 6; ++i) s[i][l] = 0;
@@ -163,6 +185,7 @@ class CompositeDamageLanes {
     ctx.element_dt = p.dt > 0 ? p.element_dt[l] : 0.0;
     ctx.initial_dt = initial_dt_[e];
     ctx.erosion_scale = scale(e);
+    set_neighbourhood(ctx, e);
     const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl, h);
     const int lost = composite_damage_lost_components(h);
     if (lost != lost_before) lost_change_[l] = lost;
@@ -176,6 +199,8 @@ class CompositeDamageLanes {
   double* axes_;
   const double* initial_dt_;
   const double* erosion_scale_;
+  ErosionNeighbourhoodView neighbourhood_;
+  int points_;
   int base_;
   bool intact_lanes_;
   int lost_change_[kLanes] = {};

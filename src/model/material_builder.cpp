@@ -110,6 +110,7 @@ material::CompositeDamageParams composite_damage_params(const config::MatComposi
   p.TFAIL = m.TFAIL;
   p.EPSF = m.EPSF, p.EPSR = m.EPSR, p.TSMD = m.TSMD > 0 ? m.TSMD : 0.9;
   p.erosion_reference_length = m.erosion_reference_length;
+  p.erosion_nonlocal = m.erosion_nonlocal;
   return p;
 }
 

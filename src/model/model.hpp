@@ -12,6 +12,7 @@
 
 #include "config/scene.hpp"
 #include "core/types.hpp"
+#include "model/erosion_neighbours.hpp"
 #include "model/mass_scaling_report.hpp"
 #include "material/composite_damage.hpp"
 #include "material/elastic.hpp"
@@ -103,6 +104,9 @@ struct ElementBlock {
   // (num_elements) *MAT_054 with erosion_reference_length: the factor on the element's erosion
   // strains (erosion_strain_scale); empty = 1 for every element.
   std::vector<double> erosion_scale;
+  // *MAT_054 with erosion_nonlocal: the elements shorter than the reference length also erode at the
+  // card's strains where the mean strain over this neighbourhood reaches them.
+  ErosionNeighbours erosion_neighbours;
   std::size_t size() const { return element_id.size(); }
   bool fully_integrated() const { return elform == 2 || elform == -2; }
   int points() const { return fully_integrated() ? 8 : 1; }

@@ -5,6 +5,7 @@
 #include "core/error.hpp"
 #include "element/hex8.hpp"
 #include "element/hex8_ans.hpp"
+#include "model/erosion_neighbours.hpp"
 #include "model/erosion_scale.hpp"
 #include "model/material_builder.hpp"
 #include "model/mesh_conversion.hpp"
@@ -207,6 +208,14 @@ Model build_model(const config::Scene& scene, const mesh::Mesh& mesh) {
           block.erosion_scale[e] = erosion_strain_scale(reference, ply_plane_length(x, volume, axes));
         }
       }
+    }
+    if (mat.kind == MaterialKind::CompositeDamage && mat.composite.erosion_nonlocal && !block.erosion_scale.empty()) {
+      // The elements the scaling applies to also erode where their neighbourhood's mean strain
+      // reaches the card's limits.
+      std::vector<bool> needs(block.size());
+      for (std::size_t e = 0; e < block.size(); ++e) needs[e] = block.erosion_scale[e] > 1;
+      block.erosion_neighbours =
+          build_erosion_neighbours(block, model.X, mat.composite.erosion_reference_length, needs);
     }
   }
 

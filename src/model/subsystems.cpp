@@ -8,25 +8,35 @@ namespace plyimpact::model {
 
 namespace {
 
-// Which elements erode at scaled strains (erosion_reference_length) and by how much.
+// Which elements erode at scaled strains (erosion_reference_length) and by how much, or average
+// their strains over a neighbourhood (erosion_nonlocal).
 Subsystem erosion_length_scaling(const Model& model) {
-  std::size_t scaled = 0, elements = 0;
-  double largest = 1;
+  std::size_t scaled = 0, elements = 0, averaged = 0;
+  double largest = 1, neighbours = 0;
   std::set<std::string> names;
   for (const auto& b : model.blocks) {
-    if (b.erosion_scale.empty()) continue;
+    const auto& n = b.erosion_neighbours;
+    if (b.erosion_scale.empty() && n.empty()) continue;
     elements += b.size();
     names.insert(model.materials[b.material].name);
     for (double k : b.erosion_scale)
       if (k > 1) ++scaled, largest = std::max(largest, k);
+    const std::size_t with = n.elements_with_neighbours();
+    averaged += with;
+    neighbours += n.mean_count() * double(with);
   }
   if (elements == 0) return {"erosion_length_scaling", false, "left out: no *MAT_054 with erosion_reference_length"};
   std::ostringstream s;
-  if (scaled == 0)
+  if (scaled == 0 && averaged == 0)
     s << "all " << elements << " elements at least their reference length: the card's DFAIL*/EFS (";
-  else
+  else if (averaged == 0)
     s << scaled << " of " << elements << " elements shorter than their reference length erode at up to " << largest
       << " x the card's DFAIL*/EFS (";
+  else
+    s << averaged << " of " << elements << " elements shorter than their reference length erode when their own and "
+      << "their neighbourhood's mean strain reach the card's DFAIL*/EFS, or their own up to " << largest
+      << " x them (erosion_nonlocal; " << std::size_t(neighbours / double(averaged) + 0.5)
+      << " neighbours each on average) (";
   for (auto it = names.begin(); it != names.end(); ++it) s << (it == names.begin() ? "" : ", ") << *it;
   s << ")";
   return {"erosion_length_scaling", true, s.str()};

@@ -47,6 +47,8 @@ BlockState initial_block_state(const model::Model& model, std::size_t b) {
       std::copy(a.begin(), a.end(), st.axes.begin() + 9 * e);
     }
     st.initial_dt.assign(blk.size(), 0.0);
+    if (!blk.erosion_neighbours.empty())  // strain-free at t = 0
+      for (auto& buffer : st.erosion_strain) buffer.assign(6 * blk.size(), 0.0);
   }
   return st;
 }

@@ -23,6 +23,17 @@
 
 namespace plyimpact::solver {
 
+// The view of the block's erosion neighbourhoods for this pass (empty without any).
+inline material::ErosionNeighbourhoodView erosion_neighbourhood(const model::ElementBlock& blk, BlockState& st) {
+  material::ErosionNeighbourhoodView v;
+  const auto& n = blk.erosion_neighbours;
+  if (n.empty()) return v;
+  v.start = n.start.data(), v.index = n.index.data(), v.weight = n.weight.data(), v.self_weight = n.self_weight.data();
+  v.read = st.erosion_strain[st.erosion_strain_read].data();
+  v.write = st.erosion_strain[1 - st.erosion_strain_read].data();
+  return v;
+}
+
 // Calls f(material) with the update class of the block's material, built for this block and state.
 // Every template instance of f (one per material) is compiled once; the choice is made per chunk.
 template <class F>
@@ -37,6 +48,7 @@ void with_material(const model::Model& model, const model::ElementBlock& blk, Bl
     case model::MaterialKind::CompositeDamage:
       return f(material::CompositeDamageLanes(mat.composite, st.history.data(), st.axes.data(), st.initial_dt.data(),
                                               blk.erosion_scale.empty() ? nullptr : blk.erosion_scale.data(),
+                                              erosion_neighbourhood(blk, st), blk.points(),
                                               int(ErosionCause::CompositeBase)));
     case model::MaterialKind::JohnsonCook:
       return f(material::JohnsonCookLanes(mat.johnson_cook, st.history.data(), int(ErosionCause::PlasticStrain)));

@@ -93,7 +93,7 @@ std::pair<int, int> compare_random_points(const config::MatCompositeDamage& card
     }
     int erode[kLanes] = {};
     material::CompositeDamageLanes lanes(p, a.history.data(), a.axes.data(), a.initial_dt.data(),
-                                         a.erosion_scale.data(), 10);
+                                         a.erosion_scale.data(), material::ErosionNeighbourhoodView{}, 1, 10);
     lanes.update(material::LanePoint{elem, kLanes, ok, dt, Dl, trD, Rl, Jx, dte}, s_old, s_new, erode);
     for (int l = 0; l < kLanes; ++l) {
       const Index e = elem[l];

@@ -199,6 +199,16 @@ TEST(Mat054Reader, ErosionReferenceLengthIsALengthAndNeedsAnErosionStrain) {
   expect_error(no_strains, {"materials.ply.erosion_reference_length", "none is set", "DFAILT > 0"});
 }
 
+TEST(Mat054Reader, ErosionNonlocalNeedsTheReferenceLength) {
+  EXPECT_FALSE(read(kSeedCard).erosion_nonlocal);  // off unless given
+  const std::string both = with("erosion_reference_length", "2.5") + "    erosion_nonlocal: true\n";
+  EXPECT_TRUE(read(both).erosion_nonlocal);
+  expect_error(with("erosion_nonlocal", "true"),
+               {"card.yaml:", "materials.ply.erosion_nonlocal", "erosion_reference_length > 0"});
+  expect_error(with("erosion_reference_length", "2.5") + "    erosion_nonlocal: yes\n",
+               {"materials.ply.erosion_nonlocal", "true", "false"});
+}
+
 TEST(Mat054Reader, UnsupportedFieldNamesTheFirstOffendingField) {
   MatCompositeDamage m = test::t800_card();
   EXPECT_FALSE(unsupported_field(m).has_value());
