@@ -416,8 +416,10 @@ void Solver::element_pass(double dt) {
   const double* v = s.v.data();
   double* f = s.f.data();
   const std::uint64_t pass = ++element_passes_;
-  for (auto& st : s.blocks)  // erosion neighbourhoods read what the previous pass wrote
-    if (!st.erosion_strain[0].empty()) st.erosion_strain_read = 1 - st.erosion_strain_read;
+  // Erosion neighbourhoods read what the previous pass wrote: the buffer follows the cycle's parity,
+  // so a restored state needs no more than the two buffers.
+  for (auto& st : s.blocks)
+    if (!st.erosion_strain[0].empty()) st.erosion_strain_read = int(s.cycle & 1);
   auto run_chunk = [&](int c) {
     const auto& chunk = schedule.chunks[std::size_t(c)];
     ChunkResult& result = chunk_results_[std::size_t(c)];

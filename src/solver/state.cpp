@@ -19,7 +19,6 @@ void BlockState::visit_state(StateVisitor& sv) {
   sv.fixed_array("initial_dt", initial_dt);
   sv.fixed_array("erosion_strain_0", erosion_strain[0]);
   sv.fixed_array("erosion_strain_1", erosion_strain[1]);
-  sv.scalar("erosion_strain_read", erosion_strain_read);
 }
 
 void State::visit_state(StateVisitor& sv) {

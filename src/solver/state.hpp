@@ -36,7 +36,8 @@ struct BlockState {
   std::vector<double> initial_dt;  // (num_elements) element step at t = 0 (TFAIL ratio), MAT_054
   // *MAT_054 with erosion neighbourhoods (model::ErosionNeighbours): (num_elements, 6) element-mean
   // strains in material axes; a pass reads erosion_strain[erosion_strain_read] (the previous pass's)
-  // and writes the other, and the solver swaps them before each pass. Empty otherwise.
+  // and writes the other. The solver sets the index from the cycle's parity before each pass (so it
+  // is not part of the dumped state). Empty otherwise.
   std::vector<double> erosion_strain[2];
   int erosion_strain_read = 0;
 

@@ -81,6 +81,16 @@ TEST(RestartIdentity, ErodingImpactOnMat054PlateWithRigidSphere) {
   expect_split_identical(tmp, "impact", test::kImpactScene, 0.6, true);
 }
 
+// The same impact with erosion neighbourhoods (erosion_nonlocal over 3 mm on the 1 mm elements):
+// the two strain buffers and which of them the next pass reads carry across the restart.
+TEST(RestartIdentity, ErodingImpactWithErosionNeighbourhoods) {
+  test::TestDir tmp;
+  std::string yaml = test::kImpactScene;
+  const std::string after = "    DFAILS: 0.03\n";
+  yaml.insert(yaml.find(after) + after.size(), "    erosion_reference_length: 3\n    erosion_nonlocal: true\n");
+  expect_split_identical(tmp, "nonlocal", yaml.c_str(), 0.6, true);
+}
+
 TEST(RestartIdentity, PlateWithTiebreakInterface) {
   test::TestDir tmp;
   expect_split_identical(tmp, "tiebreak", test::kTiebreakScene, 0.45, false);
