@@ -86,8 +86,8 @@ struct CompositeDamageContext {
   // Factor (>= 1) on DFAILT, DFAILC, DFAILM, DFAILS and EFS for this element: erosion_reference_length
   // over the element's in-plane length when it is shorter (model::erosion_strain_scale), else 1.
   double erosion_scale = 1;
-  // erosion_nonlocal: the element's neighbourhood (null or without neighbours: its own strain only).
-  // A strain limit then erodes only when the neighbourhood's mean strain passes it as well.
+  // erosion_nonlocal: the element's neighbourhood (null or without neighbours: none). The card's
+  // limits then erode as well where the neighbourhood's mean strain also passes them.
   const ErosionNeighbourhoodView* neighbourhood = nullptr;
   Index element = -1;
 };

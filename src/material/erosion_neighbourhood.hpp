@@ -1,7 +1,8 @@
 // The neighbourhood over which a *MAT_054 element's erosion strains are averaged (erosion_nonlocal,
-// docs/theory.md "Erosion strains and the element length"): an element erodes by a strain limit
-// when both its own strain and the weighted mean over the elements within erosion_reference_length
-// of it pass the limit. Raw views of model::ErosionNeighbours and the run state's strain buffers.
+// docs/theory.md "Erosion strains and the element length"): besides its scaled limits, an element
+// erodes by a card's limit when both its own strain and the weighted mean over the elements within
+// erosion_reference_length of it pass it. Raw views of model::ErosionNeighbours and the run state's
+// strain buffers.
 #pragma once
 
 #include <cstddef>
