@@ -43,6 +43,22 @@ void PenaltyContact::rebuild(const AliveMask& alive, const std::vector<double>& 
   list_previous_forces();
 }
 
+void PenaltyContact::size_pass_scratch() {
+  // A restart reads a surface that erosion may have rebuilt since construction: the scratch sized
+  // by start() must follow it, or the nodes beyond the constructed outcome chunks would never be
+  // evaluated. Allocates only then.
+  const std::size_t U = set_.num_force_nodes(), N = set_.num_nodes();
+  if (marked_.size() != U) {
+    marked_.assign(U, 0);
+    touched_.reserve(U);  // no allocation in the passes
+    touched_prev_.reserve(U);
+  }
+  if (outcomes_.size() != N) {
+    outcomes_.resize(N);
+    outcome_count_.assign((N + kNodeChunk - 1) / kNodeChunk, 0);
+  }
+}
+
 void PenaltyContact::list_previous_forces() {
   touched_prev_.clear();
   for (std::size_t u = 0; u < set_.num_force_nodes(); ++u)
@@ -53,12 +69,8 @@ void PenaltyContact::start(const std::vector<double>& x) {
   const std::size_t U = set_.num_force_nodes();
   fc_.assign(3 * U, 0.0);
   rows_.assign(U, 0.0);
-  marked_.assign(U, 0);
   touched_.clear();
-  touched_.reserve(U);  // no allocation in the passes
-  touched_prev_.reserve(U);
-  outcomes_.resize(set_.num_nodes());
-  outcome_count_.assign((set_.num_nodes() + kNodeChunk - 1) / kNodeChunk, 0);
+  size_pass_scratch();
   search_.reset(set_, x.data());
   bounds_ = stiffness_bounds(set_, law_, model_.mass);
   search_.sort(set_, x.data(), 0.0, springs_.exposed_pass);
@@ -218,7 +230,7 @@ void PenaltyContact::apply(const double* x, const double* v, double* f, double d
   for (const Index u : touched_)
     for (int d = 0; d < 3; ++d) fc_[3 * std::size_t(u) + d] = 0;
   touched_.clear();
-  if (marked_.size() != U) marked_.assign(U, 0);  // a restart read a rebuilt surface
+  size_pass_scratch();
   forces_ = ContactForces{};
   const bool friction = law_.friction();
   const double v_max = std::sqrt(v_max2);

@@ -190,6 +190,8 @@ class PenaltyContact {
   void touch(Index u) {
     if (!marked_[std::size_t(u)]) marked_[std::size_t(u)] = 1, touched_.push_back(u);
   }
+  // marked_, outcomes_ and outcome_count_ for the present surface (after a restart read one).
+  void size_pass_scratch();
   // touched_prev_ from fc_prev_ (after a rebuild renumbered the force nodes).
   void list_previous_forces();
   // Outcomes of the parallel node loop: chunk c of kNodeChunk nodes writes from c kNodeChunk on.
