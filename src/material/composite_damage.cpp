@@ -161,9 +161,28 @@ void project(const Stiffness6& C, const Box& b, const double trial[6], double ou
   }
 }
 
-// The strain limits (DFAILT, DFAILC, DFAILM, DFAILS, EFS) that strain e (material axes, engineering
-// shear) reaches, as bits 1 << cause.
-int strain_limits_reached(const CompositeDamageParams& p, const double e[6], double k) {
+CompositeDamageCause erosion_cause(const CompositeDamageParams& p, const double* h,
+                                   const CompositeDamageContext& ctx) {
+  using C = CompositeDamageCause;
+  const double* e = h + H::kStrain;
+  if (p.DFAILT == 0 && failed(h, H::kFibreTension)) return C::FibreTension;
+  // The point's own strain erodes at the scaled limits; with a neighbourhood the card's limits
+  // erode where the neighbourhood's mean strain reaches them.
+  const int reached = composite_damage_strain_limits(p, e, ctx.erosion_scale) | ctx.mean_limits;
+  for (C c : {C::DFAILT, C::DFAILC, C::DFAILM, C::DFAILS, C::EFS})
+    if (reached & (1 << int(c))) return c;
+  if (p.EPSF > 0 && p.EPSR < 0 && h[H::kTransverseShearDamage] >= p.TSMD) return C::TransverseShear;
+  if (p.TFAIL > 0 && ctx.element_dt > 0) {
+    if (p.TFAIL <= 0.1 ? ctx.element_dt < p.TFAIL
+                       : (ctx.initial_dt > 0 && ctx.element_dt / ctx.initial_dt < p.TFAIL))
+      return C::TFAIL;
+  }
+  return C::None;
+}
+
+}  // namespace
+
+int composite_damage_strain_limits(const CompositeDamageParams& p, const double e[6], double k) {
   using C = CompositeDamageCause;
   const auto bit = [](C c) { return 1 << int(c); };
   int reached = 0;
@@ -181,36 +200,6 @@ int strain_limits_reached(const CompositeDamageParams& p, const double e[6], dou
   }
   return reached;
 }
-
-CompositeDamageCause erosion_cause(const CompositeDamageParams& p, const double* h,
-                                   const CompositeDamageContext& ctx) {
-  using C = CompositeDamageCause;
-  const double* e = h + H::kStrain;
-  if (p.DFAILT == 0 && failed(h, H::kFibreTension)) return C::FibreTension;
-  // The scaled limits always erode; with a neighbourhood the card's erode as well where the
-  // neighbourhood's mean strain reaches them (the scaled ones then bound how long a point whose
-  // neighbours strain the other way can survive).
-  int reached = strain_limits_reached(p, e, ctx.erosion_scale);
-  if (ctx.neighbourhood != nullptr && ctx.neighbourhood->has(ctx.element)) {
-    const int card = strain_limits_reached(p, e, 1.0) & ~reached;
-    if (card != 0) {
-      double mean[6];
-      ctx.neighbourhood->mean(ctx.element, e, mean);
-      reached |= card & strain_limits_reached(p, mean, 1.0);
-    }
-  }
-  for (C c : {C::DFAILT, C::DFAILC, C::DFAILM, C::DFAILS, C::EFS})
-    if (reached & (1 << int(c))) return c;
-  if (p.EPSF > 0 && p.EPSR < 0 && h[H::kTransverseShearDamage] >= p.TSMD) return C::TransverseShear;
-  if (p.TFAIL > 0 && ctx.element_dt > 0) {
-    if (p.TFAIL <= 0.1 ? ctx.element_dt < p.TFAIL
-                       : (ctx.initial_dt > 0 && ctx.element_dt / ctx.initial_dt < p.TFAIL))
-      return C::TFAIL;
-  }
-  return C::None;
-}
-
-}  // namespace
 
 const char* composite_damage_cause_name(CompositeDamageCause c) {
   switch (c) {

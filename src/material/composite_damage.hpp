@@ -7,7 +7,6 @@
 
 #include "material/composite_damage_criteria.hpp"
 #include "material/elastic.hpp"
-#include "material/erosion_neighbourhood.hpp"
 
 namespace plyimpact::material {
 
@@ -86,10 +85,10 @@ struct CompositeDamageContext {
   // Factor (>= 1) on DFAILT, DFAILC, DFAILM, DFAILS and EFS for this element: erosion_reference_length
   // over the element's in-plane length when it is shorter (model::erosion_strain_scale), else 1.
   double erosion_scale = 1;
-  // erosion_nonlocal: the element's neighbourhood (null or without neighbours: none). The card's
-  // limits then erode as well where the neighbourhood's mean strain also passes them.
-  const ErosionNeighbourhoodView* neighbourhood = nullptr;
-  Index element = -1;
+  // erosion_nonlocal: the card's strain limits (bits 1 << CompositeDamageCause, as
+  // composite_damage_strain_limits) that the mean strain over the element's neighbourhood reached
+  // in the previous pass; they erode the point whatever its own strain.
+  int mean_limits = 0;
 };
 
 struct CompositeDamageResult {
@@ -102,6 +101,10 @@ struct CompositeDamageResult {
 CompositeDamageResult composite_damage_update(const CompositeDamageParams& p, const double dstrain[6],
                                               double stress[6], double* history,
                                               const CompositeDamageContext& ctx);
+
+// The strain limits DFAILT, DFAILC, DFAILM, DFAILS and EFS, each times k, that the strain e
+// (material axes, engineering shear) reaches, as bits 1 << CompositeDamageCause.
+int composite_damage_strain_limits(const CompositeDamageParams& p, const double e[6], double k);
 
 // In-plane components a point has lost to failure, as a bit mask: their tangent is zero from the
 // failure on (removed, or held at the SLIM floor: perfectly plastic). Degradation table of

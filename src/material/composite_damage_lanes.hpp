@@ -11,6 +11,7 @@
 
 #include "material/composite_damage.hpp"
 #include "material/composite_damage_intact_lanes.hpp"
+#include "material/erosion_neighbourhood.hpp"
 #include "material/lane_point.hpp"
 
 namespace plyimpact::material {
@@ -46,7 +47,11 @@ class CompositeDamageLanes {
 
   PLYIMPACT_LANE_KERNEL void update(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes]) {
     if (!intact_lanes_) {
-      for (int l = 0; l < kLanes; ++l) lost_change_[l] = -1, update_lane(p, s_old, s, erode, l);
+      for (int l = 0; l < kLanes; ++l) {
+        lost_change_[l] = -1;
+        mean_limits_[l] = l < p.n && p.ok[l] ? mean_limits(p.elem[l]) : 0;
+        update_lane(p, s_old, s, erode, l);
+      }
       return;
     }
     // Intact points in SIMD lanes (composite_damage_intact_lanes.hpp); a lane that is not intact or
@@ -63,8 +68,9 @@ class CompositeDamageLanes {
       h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
       h.element_dt[l] = p.dt > 0 ? p.element_dt[l] : 0.0;
       h.initial_dt[l] = initial_dt_[e];
-      h.erosion_scale[l] = neighbourhood_.has(e) ? 1.0 : scale(e);  // card's limits: the mean decides
-      intact[l] = composite_damage_intact(hl) ? 1.0 : 0.0;
+      h.erosion_scale[l] = scale(e);
+      mean_limits_[l] = l < p.n && p.ok[l] ? mean_limits(e) : 0;
+      intact[l] = composite_damage_intact(hl) && mean_limits_[l] == 0 ? 1.0 : 0.0;
     }
     IntactLaneResult r;
     composite_intact_lanes(p_, Qo, p.R, s_old, p.D, p.dt, h, r);
@@ -100,7 +106,7 @@ class CompositeDamageLanes {
     ctx_.element_dt = dt > 0 ? element_dt : 0.0;
     ctx_.initial_dt = initial_dt_[e];
     ctx_.erosion_scale = scale(e);
-    set_neighbourhood(ctx_, e);
+    ctx_.mean_limits = mean_limits(e);
   }
   int update_point(const Point& p, double s[6], double* history) const {
     const auto res = composite_point_update(p_, qo_, qn_, p.D, p.dt, ctx_, s, history);
@@ -131,8 +137,8 @@ class CompositeDamageLanes {
         h.shear_damage[l] = hl[composite_history::kTransverseShearDamage];
         h.element_dt[l] = ctx_.element_dt;
         h.initial_dt[l] = ctx_.initial_dt;
-        h.erosion_scale[l] = ctx_.neighbourhood ? 1.0 : ctx_.erosion_scale;
-        intact[l] = composite_damage_intact(hl);
+        h.erosion_scale[l] = ctx_.erosion_scale;
+        intact[l] = composite_damage_intact(hl) && ctx_.mean_limits == 0;
       }
       composite_intact_lanes(p_, Qo, R, s_old, D, dt, h, r);
     }
@@ -155,18 +161,25 @@ class CompositeDamageLanes {
 
  private:
   double scale(Index e) const { return erosion_scale_ ? erosion_scale_[e] : 1.0; }
-  void set_neighbourhood(CompositeDamageContext& ctx, Index e) const {
-    if (neighbourhood_.has(e)) ctx.neighbourhood = &neighbourhood_, ctx.element = e;
+  // The card's limits the mean strain over element e's neighbourhood reached in the previous pass
+  // (0 without a neighbourhood, or when no element of it passed one: the mean then cannot).
+  int mean_limits(Index e) const {
+    if (!neighbourhood_.has(e) || !neighbourhood_.any_past_card(e)) return 0;
+    double mean[6];
+    neighbourhood_.mean(e, mean);
+    return composite_damage_strain_limits(p_, mean, 1.0);
   }
-  // The element's mean strain over its points, for its neighbours' erosion checks in the next pass.
+  // The element's mean strain over its points, and whether it passed a card limit, for the
+  // neighbourhoods' erosion checks in the next pass.
   void record_strain(Index e) const {
     if (neighbourhood_.write == nullptr) return;
-    double* out = neighbourhood_.write + 6 * std::size_t(e);
+    double* out = neighbourhood_.write + kErosionStrainStride * std::size_t(e);
     const double* h = &history_[std::size_t(e) * std::size_t(points_) * kCompositeDamageHistory];
     for (int i = 0; i < 6; ++i) out[i] = 0;
     for (int g = 0; g < points_; ++g)
       for (int i = 0; i < 6; ++i) out[i] += h[std::size_t(g) * kCompositeDamageHistory + composite_history::kStrain + i];
     for (int i = 0; i < 6; ++i) out[i] /= points_;
+    out[kErosionStrainPastCard] = composite_damage_strain_limits(p_, out, 1.0) != 0 ? 1.0 : 0.0;
   }
   // The general point update of lane l (composite_point_update).
   void update_lane(const LanePoint& p, const LaneVec<6>& s_old, LaneVec<6>& s, int (&erode)[kLanes], int l) {
@@ -185,7 +198,7 @@ class CompositeDamageLanes {
     ctx.element_dt = p.dt > 0 ? p.element_dt[l] : 0.0;
     ctx.initial_dt = initial_dt_[e];
     ctx.erosion_scale = scale(e);
-    set_neighbourhood(ctx, e);
+    ctx.mean_limits = mean_limits_[l];
     const auto res = composite_point_update(p_, Qo, Qn, Dl, p.dt, ctx, sl, h);
     const int lost = composite_damage_lost_components(h);
     if (lost != lost_before) lost_change_[l] = lost;
@@ -204,6 +217,7 @@ class CompositeDamageLanes {
   int base_;
   bool intact_lanes_;
   int lost_change_[kLanes] = {};
+  int mean_limits_[kLanes] = {};
   alignas(64) double qnew_[9][kLanes] = {};
   double qo_[9] = {}, qn_[9] = {}, r_[9] = {};
   CompositeDamageContext ctx_;

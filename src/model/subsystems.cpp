@@ -33,8 +33,8 @@ Subsystem erosion_length_scaling(const Model& model) {
     s << scaled << " of " << elements << " elements shorter than their reference length erode at up to " << largest
       << " x the card's DFAIL*/EFS (";
   else
-    s << averaged << " of " << elements << " elements shorter than their reference length erode when their own and "
-      << "their neighbourhood's mean strain reach the card's DFAIL*/EFS, or their own up to " << largest
+    s << averaged << " of " << elements << " elements shorter than their reference length erode when the mean strain "
+      << "over their reference length reaches the card's DFAIL*/EFS, or their own up to " << largest
       << " x them (erosion_nonlocal; " << std::size_t(neighbours / double(averaged) + 0.5)
       << " neighbours each on average) (";
   for (auto it = names.begin(); it != names.end(); ++it) s << (it == names.begin() ? "" : ", ") << *it;

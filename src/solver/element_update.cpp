@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "material/composite_damage.hpp"
+#include "material/erosion_neighbourhood.hpp"
 #include "solver/assumed_strain_hourglass.hpp"
 #include "solver/directional_step.hpp"
 #include "solver/element_families.hpp"
@@ -48,7 +49,7 @@ BlockState initial_block_state(const model::Model& model, std::size_t b) {
     }
     st.initial_dt.assign(blk.size(), 0.0);
     if (!blk.erosion_neighbours.empty())  // strain-free at t = 0
-      for (auto& buffer : st.erosion_strain) buffer.assign(6 * blk.size(), 0.0);
+      for (auto& buffer : st.erosion_strain) buffer.assign(material::kErosionStrainStride * blk.size(), 0.0);
   }
   return st;
 }

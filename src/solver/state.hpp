@@ -34,8 +34,9 @@ struct BlockState {
   std::vector<double> history;
   std::vector<double> axes;        // (num_elements, 9) current material axes (rows a, b, c), MAT_054
   std::vector<double> initial_dt;  // (num_elements) element step at t = 0 (TFAIL ratio), MAT_054
-  // *MAT_054 with erosion neighbourhoods (model::ErosionNeighbours): (num_elements, 6) element-mean
-  // strains in material axes; a pass reads erosion_strain[erosion_strain_read] (the previous pass's)
+  // *MAT_054 with erosion neighbourhoods (model::ErosionNeighbours): (num_elements,
+  // material::kErosionStrainStride) element-mean strains in material axes and whether they passed a
+  // card limit; a pass reads erosion_strain[erosion_strain_read] (the previous pass's)
   // and writes the other. The solver sets the index from the cycle's parity before each pass (so it
   // is not part of the dumped state). Empty otherwise.
   std::vector<double> erosion_strain[2];

@@ -1,7 +1,7 @@
 // Erosion strains averaged over the reference length (erosion_nonlocal, docs/theory.md "Erosion
 // strains and the element length"). An element shorter than erosion_reference_length R erodes by a
-// strain limit when its own strain and the bell-weighted mean strain of the elements within R of it
-// both reach the card's limit. Independent answers: the share a straight band of one element
+// card's strain limit when the bell-weighted mean strain of the elements within R of it (itself
+// included) reaches it, and by its own strain at the limit times R / h. Independent answers: the share a straight band of one element
 // carries in a bell-weighted disc, 16 h / (5 pi R) (the integral of (1 - r^2/R^2)^2 along a line
 // through the centre over its integral over the disc); the kinematics of a homogeneous stretch.
 #include <gtest/gtest.h>
@@ -12,6 +12,7 @@
 
 #include "../core/support.hpp"
 #include "mat054_support.hpp"
+#include "material/erosion_neighbourhood.hpp"
 #include "model/erosion_neighbours.hpp"
 #include "model/subsystems.hpp"
 #include "solver/solver.hpp"
@@ -84,19 +85,33 @@ TEST(ErosionNonlocal, ABandOfOneElementCarriesItsShareOfTheBellWeights) {
 
 // One material point of the seed's 0 degree card pulled along its fibres, with the factor k = 4 (an
 // element a quarter of the reference length) and one neighbour of weight 1 - w0 whose strain is
-// `follow` times the point's strain of the previous step (the previous pass's, as in the solver):
-// the strain at which the point erodes.
+// `follow` times the point's, both read one step behind (the previous pass's buffers, as in the
+// solver): the strain at which the point erodes.
+constexpr int kStride = material::kErosionStrainStride;
+
+void fill_buffer(const material::CompositeDamageParams& p, const double e[6], double* out) {
+  for (int i = 0; i < 6; ++i) out[i] = e[i];
+  out[material::kErosionStrainPastCard] = material::composite_damage_strain_limits(p, e, 1.0) != 0;
+}
+
 double erosion_strain(double w0, double follow, bool with_neighbourhood) {
   test::PointDriver d(test::t800_card_0deg());
   const Index start[3] = {0, 1, 1}, index[1] = {1};
   const double weight[1] = {1 - w0}, self[2] = {w0, 1};
-  std::vector<double> read(12, 0.0);
-  material::ErosionNeighbourhoodView view{start, index, weight, self, read.data(), nullptr};
+  std::vector<double> read(2 * kStride, 0.0);
+  const material::ErosionNeighbourhoodView view{start, index, weight, self, read.data(), nullptr};
   d.ctx.erosion_scale = 4;
-  if (with_neighbourhood) d.ctx.neighbourhood = &view, d.ctx.element = 0;
   const double step = 1e-5;
   for (int k = 0; k < 20000 && !d.result().erode; ++k) {
-    read[6] = follow * d.strain()[0];
+    double own[6], other[6];
+    for (int i = 0; i < 6; ++i) own[i] = d.strain()[i], other[i] = follow * own[i];
+    fill_buffer(d.params(), own, &read[0]);
+    fill_buffer(d.params(), other, &read[kStride]);
+    if (with_neighbourhood && view.any_past_card(0)) {
+      double mean[6];
+      view.mean(0, mean);
+      d.ctx.mean_limits = material::composite_damage_strain_limits(d.params(), mean, 1.0);
+    }
     d.uniaxial_step(0, step);
   }
   EXPECT_TRUE(d.result().erode);
@@ -113,10 +128,39 @@ TEST(ErosionNonlocal, TheMeanErodesAtTheCardsStrainsTheFactorBoundsThem) {
   // The neighbour unstrained, carrying half the weights: the mean reaches DFAILT when the point's
   // own strain is 2 DFAILT. (A band of one element of h = R/4 carries a quarter, so its mean and
   // the factor agree there, as the band share test above shows.)
-  EXPECT_NEAR(erosion_strain(0.5, 0, true), 2 * DFAILT, 1.5 * step);
+  EXPECT_NEAR(erosion_strain(0.5, 0, true), 2 * DFAILT, 2 * step);
   // The neighbour strained the other way (a kink): the mean stays at zero, and the factor's limit
   // erodes the point.
-  EXPECT_NEAR(erosion_strain(0.5, -1, true), 4 * DFAILT, 1.5 * step);
+  EXPECT_NEAR(erosion_strain(0.5, -1, true), 4 * DFAILT, 2 * step);
+}
+
+TEST(ErosionNonlocal, APointBesideABandErodesWithIt) {
+  // The neighbour, with half the weights, has opened to 2.5 DFAILT (a band that has just eroded
+  // keeps that strain); the point itself is barely strained. The mean, 1.25 DFAILT, erodes it at
+  // its first update, by DFAILT: the reference element holding both would have eroded too.
+  test::PointDriver d(test::t800_card_0deg());
+  const double DFAILT = d.params().DFAILT;
+  const Index start[3] = {0, 1, 1}, index[1] = {1};
+  const double weight[1] = {0.5}, self[2] = {0.5, 1};
+  std::vector<double> read(2 * kStride, 0.0);
+  const double band[6] = {2.5 * DFAILT, 0, 0, 0, 0, 0}, none[6] = {};
+  fill_buffer(d.params(), none, &read[0]);
+  fill_buffer(d.params(), band, &read[kStride]);
+  const material::ErosionNeighbourhoodView view{start, index, weight, self, read.data(), nullptr};
+  ASSERT_TRUE(view.any_past_card(0));
+  double mean[6];
+  view.mean(0, mean);
+  EXPECT_DOUBLE_EQ(mean[0], 1.25 * DFAILT);
+  d.ctx.erosion_scale = 4;
+  d.ctx.mean_limits = material::composite_damage_strain_limits(d.params(), mean, 1.0);
+  d.uniaxial_step(0, 1e-5);
+  EXPECT_TRUE(d.result().erode);
+  EXPECT_EQ(d.result().cause, int(material::CompositeDamageCause::DFAILT));
+  // With the band at 1.5 DFAILT the mean stays below the card's limit and the point lives on.
+  const double weak[6] = {1.5 * DFAILT, 0, 0, 0, 0, 0};
+  fill_buffer(d.params(), weak, &read[kStride]);
+  view.mean(0, mean);
+  EXPECT_EQ(material::composite_damage_strain_limits(d.params(), mean, 1.0), 0);
 }
 
 // Mean elongation of the pulled face when the first element erodes, and how many have eroded ten
