@@ -49,9 +49,9 @@ struct MatCompositeDamage {
   // element's (docs/theory.md, "Erosion strains and the element length"). 0 = the card's strains in
   // every element.
   double erosion_reference_length = 0;
-  // An element shorter than erosion_reference_length also erodes at the card's limits where both its
-  // own strain and the mean strain within that length of it reach them: a uniform field then erodes
-  // at the card's strain, a one-element band still near the factor's.
+  // An element shorter than erosion_reference_length also erodes at the card's limits where the mean
+  // strain within that length of it (its own included) reaches them, as *MAT_NONLOCAL: a uniform
+  // field then erodes at the card's strain, a one-element band near the factor's.
   bool erosion_nonlocal = false;
 };
 

@@ -82,7 +82,8 @@ TEST(RestartIdentity, ErodingImpactOnMat054PlateWithRigidSphere) {
 }
 
 // The same impact with erosion neighbourhoods (erosion_nonlocal over 3 mm on the 1 mm elements):
-// the two strain buffers and which of them the next pass reads carry across the restart.
+// the two strain buffers carry across the restart (which one the next pass reads follows the
+// cycle's parity).
 // Also the case of a contact surface that erosion has grown since the run began: at the split the
 // eroding contact has about 600 nodes against 460 at construction, more than its 256-node outcome
 // chunks held then (a continued run that kept the constructed chunks skipped the nodes beyond them).
