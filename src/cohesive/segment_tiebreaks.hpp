@@ -57,6 +57,7 @@ class SegmentTiebreaks {
   // A tie whose master segment is gone (its element eroded) carries nothing from now on; it counts
   // as separated. Its elastic energy at that moment is released (counted as dissipated).
   void release(std::size_t tie);
+  bool released(std::size_t tie) const { return released_[tie] != 0; }
 
   std::size_t size() const { return ties_.size(); }
   const SegmentTie& tie(std::size_t k) const { return ties_[k]; }

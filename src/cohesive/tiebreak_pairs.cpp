@@ -63,13 +63,24 @@ void TiebreakPairs::compute_face_vectors(std::size_t begin, std::size_t end) {
 }
 
 // Unit normals of pairs [begin, end) from the face vector areas around each (current face_vector_).
+// A face with a released corner is left out: erosion has cut it, and that corner's midpoint is
+// where the nodes of an eroded ply happen to be, not the interface. A pair whose faces are all cut
+// keeps its last normal.
 void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
   for (std::size_t p = begin; p < end; ++p) {
     double n[3] = {0, 0, 0};
+    bool any = false;
     for (Index k = pair_face_offset_[p]; k < pair_face_offset_[p + 1]; ++k) {
-      const double* a = &face_vector_[3 * pair_face_[k]];
+      const Index face = pair_face_[k];
+      const Index* q = &faces_[4 * std::size_t(face)];
+      if (released_[std::size_t(q[0])] | released_[std::size_t(q[1])] | released_[std::size_t(q[2])] |
+          released_[std::size_t(q[3])])
+        continue;
+      const double* a = &face_vector_[3 * std::size_t(face)];
       for (int i = 0; i < 3; ++i) n[i] += a[i];
+      any = true;
     }
+    if (!any) continue;
     const double inv = 1 / std::sqrt(dot(n, n));
     for (int i = 0; i < 3; ++i) normals_[3 * p + i] = n[i] * inv;
   }
@@ -195,6 +206,7 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
     if (p < 0 || std::size_t(p) >= n) throw InputError(msg() << "tiebreak pairs: face refers to pair " << p << " of " << n);
 
   pairs_.resize(n);
+  released_.assign(n, 0);  // before the first normals, which leave out the faces of released pairs
   Index max_node = -1;
   for (std::size_t p = 0; p < n; ++p) {
     auto& c = pairs_[p];
@@ -238,7 +250,6 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
   elastic_limit_.resize(n);
   for (std::size_t p = 0; p < n; ++p) elastic_limit_[p] = laws_.of(p).elastic_limit;
   history_.assign(n);
-  released_.assign(n, 0);
   point_elastic_.assign(n, 0.0);
   sums_.assign((n + kChunk - 1) / kChunk);
   set_nodal_mass(nodal_mass);

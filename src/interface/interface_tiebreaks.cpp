@@ -259,6 +259,16 @@ void InterfaceTiebreaks::on_erosion(const solver::AliveMask& alive, const std::v
   }
 }
 
+void InterfaceTiebreaks::mark_held_nodes(std::vector<char>& held) const {
+  for (std::size_t i = 0; i < pairs_.size(); ++i) {
+    const model::Interface& itf = *pair_interfaces_[i];
+    for (std::size_t p = 0; p < itf.num_pairs(); ++p)
+      if (!pairs_[i].released(p)) held[std::size_t(itf.lower_nodes[p])] = held[std::size_t(itf.upper_nodes[p])] = 1;
+  }
+  for (const auto& e : cohesive_)
+    for (Index node : e.nodes()) held[std::size_t(node)] = 1;
+}
+
 void InterfaceTiebreaks::apply(const solver::ForceContext& c) {
   // One interface per iteration: with no node shared between interfaces each node's force gets
   // the contributions of one interface only, added in that interface's own fixed order, so the

@@ -44,6 +44,8 @@ class InterfaceTiebreaks : public solver::ForceContributor, public InterfaceSamp
   void visit_state(StateVisitor& visitor) override;
   // Releases for good every pair with no live element left around its lower or its upper node.
   void on_erosion(const solver::AliveMask& alive, const std::vector<double>& x) override;
+  // Both nodes of every pair not released, and the nodes of every cohesive element (never deleted).
+  void mark_held_nodes(std::vector<char>& held) const override;
 
   const std::vector<cohesive::TiebreakPairs>& pairs() const { return pairs_; }
   const std::vector<int>& interface_ids() const { return ids_; }  // 1-based number of each pairs_ entry

@@ -125,6 +125,16 @@ void SurfaceTiebreaks::on_erosion(const solver::AliveMask& alive, const std::vec
   }
 }
 
+void SurfaceTiebreaks::mark_held_nodes(std::vector<char>& held) const {
+  for (const auto& t : ties_)
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (t.released(k)) continue;
+      const cohesive::SegmentTie& tie = t.tie(k);
+      held[std::size_t(tie.slave)] = 1;
+      for (Index m : tie.master) held[std::size_t(m)] = 1;
+    }
+}
+
 std::vector<std::string> SurfaceTiebreaks::history_columns() const {
   std::vector<std::string> cols;
   for (const auto& n : names_) cols.push_back("delaminated_area_" + n);

@@ -43,6 +43,8 @@ class SurfaceTiebreaks : public solver::ForceContributor, public InterfaceSample
   double stable_step() const override { return stable_step_; }
   std::vector<std::string> warnings() const override { return warnings_; }
   void on_erosion(const solver::AliveMask& alive, const std::vector<double>& x) override;
+  // The slave node and the master segment's nodes of every tie not released.
+  void mark_held_nodes(std::vector<char>& held) const override;
   std::vector<std::string> history_columns() const override;
   void history_values(std::vector<double>& row) const override;
   void visit_state(StateVisitor& visitor) override;

@@ -27,25 +27,15 @@ std::vector<std::string> history_columns(const model::Model& model, const solver
       for (auto& col : solver->contributors()[c]->history_columns()) cols.push_back(std::move(col));
     }
   }
-  if (can_erode(model)) {
-    cols.push_back("eroded_elements");
-    cols.push_back("eroded_energy");
-    cols.push_back("eroded_hourglass_energy");
-  }
+  if (solver::can_erode(model))  // only when something can erode (solver::can_erode)
+    for (const char* c : {"eroded_elements", "eroded_energy", "eroded_hourglass_energy", "eroded_kinetic_energy"})
+      cols.push_back(c);
   for (const HistoryColumns* x : extra)
     for (auto& col : x->columns()) cols.push_back(std::move(col));
   return cols;
 }
 
 }  // namespace
-
-bool can_erode(const model::Model& model) {
-  if (model.control.erode_tsmin > 0) return true;
-  for (const auto& m : model.materials)
-    if (m.can_fail())
-      return true;
-  return false;
-}
 
 HistoryWriter::HistoryWriter(const model::Model& model, std::filesystem::path file, double interval,
                              std::vector<const HistoryColumns*> extra)
@@ -56,7 +46,7 @@ void HistoryWriter::add_row(const solver::Solver& solver) {
   const solver::Energies& e = solver.balance();
   row_.assign({e.time, s.dt_prev_half});
   for (const auto& t : e.terms)
-    if (t.owner < 0) row_.push_back(t.value);
+    if (t.owner == solver::Energies::kIntegrator) row_.push_back(t.value);
   row_.insert(row_.end(), {e.total(), solver.energy_ratio(), double(s.dt_element)});
   row_.insert(row_.end(), s.reaction.begin(), s.reaction.end());
   for (std::size_t c = 0; c < solver.contributors().size(); ++c) {
@@ -64,7 +54,8 @@ void HistoryWriter::add_row(const solver::Solver& solver) {
       if (t.owner == int(c)) row_.push_back(t.value);
     solver.contributors()[c]->history_values(row_);
   }
-  if (can_erode(solver.model())) row_.insert(row_.end(), {double(s.eroded_elements), s.eroded_energy, s.eroded_hourglass_energy});
+  if (solver::can_erode(solver.model()))
+    row_.insert(row_.end(), {double(s.eroded_elements), s.eroded_energy, s.eroded_hourglass_energy, s.eroded_kinetic_energy});
   for (const HistoryColumns* x : extra_) x->values(solver, row_);
   table_->add_row(row_);
 }

@@ -28,9 +28,6 @@ class HistoryColumns {
   virtual void values(const solver::Solver& solver, std::vector<double>& row) const = 0;
 };
 
-// Erosion columns only when something can erode (a material with failure, or erode_tsmin).
-bool can_erode(const model::Model& model);
-
 class HistoryWriter : public RunObserver {
  public:
   using Clock = std::chrono::steady_clock;

@@ -156,12 +156,14 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
   output::Json warnings = output::Json::array();
   for (const auto& w : report.warnings) warnings.push_back(w);
   j["warnings"] = warnings;
-  if (solver && can_erode(model)) {
+  if (solver && solver::can_erode(model)) {
     output::Json erosion = output::Json::object();
     erosion["eroded_elements"] = solver->state().eroded_elements;
     erosion["eroded_energy"] = solver->state().eroded_energy;
     erosion["eroded_hourglass_energy"] = solver->state().eroded_hourglass_energy;
     erosion["eroded_volume"] = eroded_volume(model, *solver);
+    erosion["removed_nodes"] = solver->state().removed_node_count;  // left with nothing acting on them
+    erosion["eroded_kinetic_energy"] = solver->state().eroded_kinetic_energy;  // J, what they carried
     output::Json by_part = output::Json::array();
     for (const auto& c : solver->state().erosion) {
       output::Json entry = output::Json::object();

@@ -2,7 +2,7 @@
 // hourglass, bulk viscous, external work) followed by those of the force contributors (contact,
 // friction, rigid wall, interfaces ...). The balance check, history.csv and summary.json all read
 // this list, so a new energy appears in all three by being named once (docs/theory.md section 11:
-// sliding energy with SLNTEN = 2, rigid-wall energy with RWEN = 2).
+// sliding energy with SLNTEN = 2, rigid-wall energy with RWEN = 2; the eroded kinetic energy).
 //   total = sum of the terms counted in the total (in list order)
 //   ratio = total / (initial total + external work), 1 for a perfect balance
 #pragma once
@@ -18,12 +18,16 @@ struct EnergyTerm {
   std::string column;  // history.csv column
   bool in_total = true;
   double value = 0;    // J
-  int owner = -1;      // index of the force contributor that reports it; -1: the integrator
+  int owner = -1;      // index of the force contributor that reports it, or Energies::kIntegrator / kErosion
 };
 
 class Energies {
  public:
   enum Own : std::size_t { kKinetic, kInternal, kHourglass, kBulkViscous, kExternalWork, kNumOwn };
+  // Owners of the terms that no contributor reports: the integrator's own (above), and the kinetic
+  // energy of the nodes erosion removed (appended after the contributors' terms; history.csv lists
+  // it with the erosion columns).
+  static constexpr int kIntegrator = -1, kErosion = -2;
 
   Energies();
 

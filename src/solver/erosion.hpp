@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "model/model.hpp"
 #include "solver/state.hpp"
 
 namespace plyimpact::solver {
@@ -21,6 +22,10 @@ enum class ErosionCause : int {
   CompositeBase = 10, // MAT_054: 10 + material::CompositeDamageCause
 };
 const char* erosion_cause_name(int cause);
+
+// Whether any element of the model can be eroded (a material that fails, or control.erode_tsmin):
+// the run then books eroded energies and writes their history columns.
+bool can_erode(const model::Model& model);
 
 // One element deleted in an element pass: its id, ErosionCause and the internal + hourglass energy
 // it held (J), which the run books per part and cause.

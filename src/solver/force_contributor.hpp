@@ -9,13 +9,13 @@
 //     and any external work it does;
 //   - bounds the stable step (infinity when it has no stiffness); the solver combines the bound
 //     with the element step (Solver::combined_step);
-//   - reacts to erosion (alive mask and x);
+//   - reacts to erosion (alive mask and x), and names the nodes it still acts on, so the solver
+//     keeps them when erosion leaves them without elements (mark_held_nodes);
 //   - says whether it is active and why (one line of `check` and summary.json subsystems);
 //   - has history columns of its own and its run state (visit_state).
 #pragma once
 
 #include <limits>
-#include <span>
 #include <span>
 #include <string>
 #include <vector>
@@ -82,6 +82,13 @@ class ForceContributor {
     (void)alive;
     (void)x;
   }
+
+  // Sets held[node] = 1 for every node this contributor may still put a force on (its live springs,
+  // pairs, ties, cohesive elements, wall nodes). After an erosion the solver removes from the
+  // calculation the nodes that no live element and no contributor holds (Solver::remove_freed_nodes),
+  // so a contributor that acts on particular nodes must name them here. Body forces (gravity) hold
+  // nothing: a removed node is out of the calculation, as LS-DYNA's ENMASS 0 removes it.
+  virtual void mark_held_nodes(std::vector<char>& held) const { (void)held; }
 
   // Contact forces (appended, one entry per surface) that the rigid bodies report as their contact force.
   virtual void node_forces(std::vector<NodeForces>& out) const { (void)out; }

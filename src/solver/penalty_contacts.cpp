@@ -110,6 +110,11 @@ void PenaltyContacts::on_erosion(const AliveMask& alive, const std::vector<doubl
     if (c.eroding()) c.rebuild(alive, x);
 }
 
+void PenaltyContacts::mark_held_nodes(std::vector<char>& held) const {
+  for (const auto& c : contacts_)
+    for (Index node : c.force_nodes()) held[std::size_t(node)] = 1;
+}
+
 void PenaltyContacts::node_forces(std::vector<NodeForces>& out) const {
   for (const auto& c : contacts_) out.push_back({&c.force_nodes(), &c.node_forces(), &c.loaded_force_nodes()});
 }

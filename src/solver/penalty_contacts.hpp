@@ -39,6 +39,9 @@ class PenaltyContacts : public ForceContributor {
   double stable_step() const override;
   std::vector<std::string> warnings() const override { return warnings_; }
   void on_erosion(const AliveMask& alive, const std::vector<double>& x) override;
+  // The nodes of every contact's surfaces as they are now (an eroding contact with ENMASS 1 keeps
+  // its orphans there; with ENMASS 0 they have left it).
+  void mark_held_nodes(std::vector<char>& held) const override;
   void node_forces(std::vector<NodeForces>& out) const override;
   std::vector<std::string> history_columns() const override;
   void history_values(std::vector<double>& row) const override;

@@ -19,6 +19,11 @@ class RigidWalls : public ForceContributor {
   void apply(const ForceContext& context) override;
   std::vector<EnergyName> energy_names() const override { return {{"rigid_wall", "rigidwall_energy", true}}; }
   void energies(std::span<double> out) const override { out[0] = energy_; }
+  // Every slave node of every wall: a node erosion frees can still strike a wall.
+  void mark_held_nodes(std::vector<char>& held) const override {
+    for (const auto& w : walls_)
+      for (Index node : w.wall().nodes) held[std::size_t(node)] = 1;
+  }
   std::vector<std::string> history_columns() const override;
   void history_values(std::vector<double>& row) const override;
   void visit_state(StateVisitor& visitor) override;

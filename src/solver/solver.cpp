@@ -147,6 +147,10 @@ void Solver::build_contributors() {
     for (const auto& e : names) state_.last_balance.terms.push_back({e.key, e.column, e.in_total, 0.0, int(c)});
   }
   energy_scratch_.assign(most, 0.0);
+  // Always in the balance: delete_elements may be called on any model (tests, a future element kill).
+  eroded_kinetic_term_ = state_.last_balance.terms.size();
+  state_.last_balance.terms.push_back({"eroded_kinetic", "eroded_kinetic_energy", true, 0.0, Energies::kErosion});
+  contributors_built_ = true;
   phase_times_ = {{"node update", 0}, {"element pass", 0}, {"element checks", 0}};
   for (const auto& c : contributors_) phase_times_.push_back({c->name(), 0});
 }
@@ -215,6 +219,7 @@ void Solver::contributor_forces(double dt) {
 }
 
 void Solver::delete_elements(const std::vector<Index>& ids) {
+  std::vector<std::pair<int, Index>> deleted;
   for (Index id : ids) {
     bool found = false;
     for (std::size_t b = 0; b < model_.blocks.size() && !found; ++b) {
@@ -222,13 +227,16 @@ void Solver::delete_elements(const std::vector<Index>& ids) {
       const auto it = std::lower_bound(ids_b.begin(), ids_b.end(), id);
       if (it == ids_b.end() || *it != id) continue;
       if (alive_[b].empty()) alive_[b].assign(ids_b.size(), 1);
-      alive_[b][std::size_t(it - ids_b.begin())] = 0;
+      const Index e = Index(it - ids_b.begin());
+      alive_[b][std::size_t(e)] = 0;
+      deleted.push_back({int(b), e});
       found = true;
     }
     if (!found) throw RunError(msg() << "cannot delete element " << id << ": no such element");
   }
   update_chunk_ranges();
   for (auto& c : contributors_) c->on_erosion(alive_, state_.x);
+  remove_freed_nodes(deleted);
 }
 
 void Solver::update_chunk_ranges() {
@@ -250,6 +258,7 @@ void Solver::update_chunk_ranges() {
 void Solver::visit_state(StateVisitor& visitor) {
   StateGroup group(visitor, "solver");
   state_.visit_state(visitor);
+  apply_removed_nodes();  // derived from state_.removed_nodes (a reader has just replaced it)
   visitor.fixed_array("constraint_force", constraint_force_);
   visitor.fixed_array("constraint_work", constraint_work_);
   visitor.scalar("dt_element_crit", dt_element_crit_);
@@ -403,6 +412,7 @@ void Solver::record_balance(double kinetic, double external_work) {
     contributors_[c]->energies(std::span<double>(energy_scratch_.data(), k));
     for (std::size_t i = 0; i < k; ++i) e.terms[t++].value = energy_scratch_[i];
   }
+  e.terms[eroded_kinetic_term_].value = s.eroded_kinetic_energy;
 }
 
 void Solver::element_pass(double dt) {
@@ -594,18 +604,7 @@ void Solver::mark_crashfront(const std::vector<Index>& eroded) {
   for (const auto& blk : model_.blocks)
     any_damage = any_damage || model_.materials[blk.material].kind == model::MaterialKind::CompositeDamage;
   if (!any_damage) return;
-  if (node_elements_.empty()) {  // node -> (block, element) adjacency, built at the first erosion
-    const std::size_t n = model_.num_nodes();
-    node_elements_start_.assign(n + 1, 0);
-    for (const auto& blk : model_.blocks)
-      for (Index node : blk.conn) ++node_elements_start_[node + 1];
-    for (std::size_t i = 0; i < n; ++i) node_elements_start_[i + 1] += node_elements_start_[i];
-    node_elements_.resize(node_elements_start_[n]);
-    std::vector<Index> fill(node_elements_start_.begin(), node_elements_start_.end() - 1);
-    for (std::size_t b = 0; b < model_.blocks.size(); ++b)
-      for (std::size_t e = 0; e < model_.blocks[b].size(); ++e)
-        for (int k = 0; k < 8; ++k) node_elements_[fill[model_.blocks[b].conn[8 * e + k]]++] = {int(b), Index(e)};
-  }
+  build_node_adjacency();
   for (Index id : eroded)
     for (std::size_t b = 0; b < model_.blocks.size(); ++b) {
       const auto& blk = model_.blocks[b];

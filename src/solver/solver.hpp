@@ -76,7 +76,8 @@ class Solver {
   void visit_state(StateVisitor& visitor);
 
   // Deletes elements (1-based ids) from the next cycle on: they no longer carry stress, their
-  // energies stay in the totals (eroded), and eroding contacts rebuild their surfaces at once.
+  // energies stay in the totals (eroded), and eroding contacts rebuild their surfaces at once. Their
+  // nodes that nothing holds any more leave the calculation (remove_freed_nodes).
   void delete_elements(const std::vector<Index>& ids);
 
   // The active force contributors, in the order they are applied.
@@ -101,6 +102,19 @@ class Solver {
   // Alive ranges of every chunk from alive_ (after a deletion or reading a state).
   void update_chunk_ranges();
   void mark_crashfront(const std::vector<Index>& eroded);
+  // node_elements_ (node -> (block, element)), built at the first erosion.
+  void build_node_adjacency();
+  // After a deletion (deleted: (block, element) of each deleted element): the nodes of those
+  // elements that no live deformable element, no contributor (mark_held_nodes), no constraint and no
+  // rigid body holds leave the calculation. Their velocity is zeroed and their inverse mass set to 0,
+  // so they stay where they are, and their kinetic energy is booked as eroded kinetic energy. As
+  // LS-DYNA's ENMASS 0 (the eroding contact's default) removes a node left without elements; an
+  // ENMASS 1 contact holds such nodes, and they stay. Nothing acts on a removed node, and it acts on
+  // nothing, so its removal changes no force: it only stops a mass point drifting on for ever with
+  // kinetic energy that is no longer the structure's (freed_nodes.cpp).
+  void remove_freed_nodes(const std::vector<std::pair<int, Index>>& deleted);
+  // inverse_mass_ zero at the removed nodes (after reading a state).
+  void apply_removed_nodes();
   // Builds the active contributors (after the initial element pass) and the balance's term list.
   void build_contributors();
   // The contributors' forces at x^{n+1}, phase by phase; dt = Delta t^{n+1/2} (0 at t = 0).
@@ -147,6 +161,9 @@ class Solver {
   std::vector<std::vector<std::pair<Index, Index>>> chunk_ranges_;  // empty = whole chunk
   std::vector<Index> node_elements_start_;               // CSR over nodes (built at the first erosion)
   std::vector<std::pair<int, Index>> node_elements_;     // (block, element) touching each node
+  bool contributors_built_ = false;                       // build_contributors has run
+  std::vector<char> held_scratch_;                       // (num_nodes) remove_freed_nodes' marks
+  std::size_t eroded_kinetic_term_ = 0;                  // its index in the balance's terms
 };
 
 }  // namespace plyimpact::solver

@@ -75,6 +75,12 @@ struct State {
   double eroded_energy = 0;
   double eroded_hourglass_energy = 0;  // J, the hourglass part of eroded_energy
   std::vector<ErosionCount> erosion;
+  // Nodes erosion left with nothing acting on them, removed from the calculation
+  // (Solver::remove_freed_nodes): (num_nodes) flags, empty until the first removal; how many; and
+  // the kinetic energy they carried when removed (J, in the total, as GLSTAT's eroded kinetic energy).
+  std::vector<char> removed_nodes;
+  long removed_node_count = 0;
+  double eroded_kinetic_energy = 0;
 
   // Every member above (the balance by its values: its terms are fixed by the model).
   void visit_state(StateVisitor& visitor);

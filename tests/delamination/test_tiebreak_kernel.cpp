@@ -265,6 +265,49 @@ TEST(TiebreakKernel, FacesGiveTheNormalAndTheTributaryAreas) {
   EXPECT_NEAR(pairs.elastic_energy(), 0.5 * p.CN * delta * delta * 4 * full, 1e-12 * p.CN * delta * delta * full);
 }
 
+// A pair released because erosion took its ply away no longer shapes its neighbours' normals: its
+// nodes are wherever the eroded ply left them (here thrown a metre off), so a face with that corner
+// is no part of the interface. A flat 3 x 3 grid of pairs (normal +z), corner pair 0 released and
+// its nodes moved far away, the other pairs opened along z by delta in the elastic range: every
+// remaining pair must open in pure mode I with its force along z (to round-off), the three that
+// share the cut face (1, 3, 4) included. Counting that face turned their normals by 125 degrees.
+TEST(TiebreakKernel, AReleasedPairsFacesLeaveTheNormals) {
+  const double a = 0.5e-3;
+  TiebreakPairsSpec s;
+  std::vector<double> x(2 * 9 * 3, 0.0);
+  std::vector<double> mass(18, 1e-7);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      const int p = 3 * j + i;
+      s.lower.push_back(p);
+      s.upper.push_back(9 + p);
+      x[3 * p] = x[3 * (9 + p)] = i * a;
+      x[3 * p + 1] = x[3 * (9 + p) + 1] = j * a;
+    }
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const Index q = 3 * j + i;
+      s.faces.insert(s.faces.end(), {q, q + 1, q + 4, q + 3});
+    }
+  const auto p = test::table_8_6_option9();
+  TiebreakPairs pairs(p, s, x.data(), mass.data());
+  pairs.release_pair(0);
+  for (int node : {0, 9})
+    for (int k = 0; k < 3; ++k) x[3 * node + k] = 1.0 + k;
+  const double delta = 0.5 * p.NFLS / p.CN;  // elastic
+  for (int q = 1; q < 9; ++q) x[3 * (9 + q) + 2] += delta;
+  std::vector<double> f(x.size(), 0.0);
+  pairs.apply(x.data(), nullptr, f.data(), 0);
+  std::vector<PairSample> samples(9);
+  pairs.sample(x.data(), samples.data());
+  for (int q = 1; q < 9; ++q) {
+    EXPECT_NEAR(samples[q].opening[0], delta, 1e-12 * delta) << "pair " << q;
+    EXPECT_NEAR(std::hypot(samples[q].opening[1], samples[q].opening[2]), 0.0, 1e-12 * delta) << "pair " << q;
+    EXPECT_NEAR(std::hypot(f[3 * (9 + q)], f[3 * (9 + q) + 1]), 0.0, 1e-12 * std::abs(f[3 * (9 + q) + 2])) << "pair " << q;
+  }
+  EXPECT_EQ(f[0], 0.0);  // the released pair carries nothing
+}
+
 // A 64 x 64 grid (4096 pairs, parallel above 2048) driven through damage: forces, energies and
 // history are bit-identical with 1 and 2 threads (fixed chunks, summed in order).
 // apply() takes the undamaged pairs below every onset in SIMD lanes and the others through the
