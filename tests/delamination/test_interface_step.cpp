@@ -22,6 +22,7 @@
 #include "cohesive/tiebreak_pairs.hpp"
 #include "element/hex8.hpp"
 #include "law_paths.hpp"
+#include "pair_patch.hpp"
 #include "material/elastic.hpp"
 #include "solver/directional_step.hpp"
 
@@ -58,22 +59,12 @@ double element_step(double a, double h) {
 
 // The kernel on a 3 x 3 patch of interface pairs of an a-grid, one element per ply of thickness h.
 double pair_step(double a, double h, const TractionLawParams& law) {
-  TiebreakPairsSpec s;
-  std::vector<double> x(2 * 9 * 3, 0.0), mass(18);
+  const auto [s, x] = test::pair_patch_3x3(a);
+  std::vector<double> mass(18);
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i) {
-      const int p = 3 * j + i;
-      s.lower.push_back(p);
-      s.upper.push_back(9 + p);
-      x[3 * p] = x[3 * (9 + p)] = i * a;
-      x[3 * p + 1] = x[3 * (9 + p) + 1] = j * a;
       const int elements = (i == 1 ? 2 : 1) * (j == 1 ? 2 : 1);  // elements of one ply around the node
-      mass[p] = mass[9 + p] = elements * kRho * a * a * h / 8;
-    }
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      const Index q = 3 * j + i;
-      s.faces.insert(s.faces.end(), {q, q + 1, q + 4, q + 3});
+      mass[3 * j + i] = mass[9 + 3 * j + i] = elements * kRho * a * a * h / 8;
     }
   TiebreakPairs pairs(law, s, x.data(), mass.data());
   return pairs.stable_step();

@@ -15,6 +15,7 @@
 #include "cohesive/tiebreak_pairs.hpp"
 #include "core/error.hpp"
 #include "law_paths.hpp"
+#include "pair_patch.hpp"
 
 namespace plyimpact::cohesive {
 namespace {
@@ -219,23 +220,9 @@ TEST(TiebreakKernel, StableStepIsTheCentralDifferenceLimitOfThePair) {
 // tributary areas are a quarter of each adjacent face, and opening along the normal is pure mode I.
 TEST(TiebreakKernel, FacesGiveTheNormalAndTheTributaryAreas) {
   const double a = 0.5e-3, th = std::numbers::pi / 6;
-  const double ey[3] = {0, std::cos(th), std::sin(th)};
   const double normal[3] = {0, -std::sin(th), std::cos(th)};  // e_x x e_y'
-  TiebreakPairsSpec s;
-  std::vector<double> x(2 * 9 * 3);
+  auto [s, x] = test::pair_patch_3x3(a, {0, std::cos(th), std::sin(th)});
   std::vector<double> mass(18, 1e-7);
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) {
-      const int p = 3 * j + i;
-      s.lower.push_back(p);
-      s.upper.push_back(9 + p);
-      for (int k = 0; k < 3; ++k) x[3 * p + k] = x[3 * (9 + p) + k] = (k == 0 ? i * a : 0) + j * a * ey[k];
-    }
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      const Index q = 3 * j + i;
-      s.faces.insert(s.faces.end(), {q, q + 1, q + 4, q + 3});
-    }
   // The same faces as the mesher gives them: quads of lower-side nodes (here node = pair index).
   std::vector<Index> lower_segments;
   for (Index q : s.faces) lower_segments.push_back(s.lower[q]);
@@ -273,22 +260,8 @@ TEST(TiebreakKernel, FacesGiveTheNormalAndTheTributaryAreas) {
 // share the cut face (1, 3, 4) included. Counting that face turned their normals by 125 degrees.
 TEST(TiebreakKernel, AReleasedPairsFacesLeaveTheNormals) {
   const double a = 0.5e-3;
-  TiebreakPairsSpec s;
-  std::vector<double> x(2 * 9 * 3, 0.0);
+  auto [s, x] = test::pair_patch_3x3(a);
   std::vector<double> mass(18, 1e-7);
-  for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 3; ++i) {
-      const int p = 3 * j + i;
-      s.lower.push_back(p);
-      s.upper.push_back(9 + p);
-      x[3 * p] = x[3 * (9 + p)] = i * a;
-      x[3 * p + 1] = x[3 * (9 + p) + 1] = j * a;
-    }
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      const Index q = 3 * j + i;
-      s.faces.insert(s.faces.end(), {q, q + 1, q + 4, q + 3});
-    }
   const auto p = test::table_8_6_option9();
   TiebreakPairs pairs(p, s, x.data(), mass.data());
   pairs.release_pair(0);
