@@ -46,9 +46,13 @@ void TiebreakPairs::compute_midpoints(const double* x, std::size_t begin, std::s
 }
 
 // Vector areas 1/2 (d_02 x d_13) of faces [begin, end) on the mid-surface of the last
-// compute_midpoints.
+// compute_midpoints. A cut face keeps the vector it had when erosion cut it: its released corner's
+// mid-point is wherever the eroded ply's nodes are, not the interface (counting it turned the
+// normals of the pairs beside a hole by up to 125 degrees), and dropping the face from the sum
+// would turn those normals at once, in a step, which a damaged pair's law turns into energy.
 void TiebreakPairs::compute_face_vectors(std::size_t begin, std::size_t end) {
   for (std::size_t f = begin; f < end; ++f) {
+    if (!face_cut_.empty() && face_cut_[f]) continue;
     const Index* q = &faces_[4 * f];
     const double* m0 = &midpoints_[3 * std::size_t(q[0])];
     const double* m1 = &midpoints_[3 * std::size_t(q[1])];
@@ -63,24 +67,13 @@ void TiebreakPairs::compute_face_vectors(std::size_t begin, std::size_t end) {
 }
 
 // Unit normals of pairs [begin, end) from the face vector areas around each (current face_vector_).
-// A face with a released corner is left out: erosion has cut it, and that corner's midpoint is
-// where the nodes of an eroded ply happen to be, not the interface. A pair whose faces are all cut
-// keeps its last normal.
 void TiebreakPairs::normals_from_faces(std::size_t begin, std::size_t end) {
   for (std::size_t p = begin; p < end; ++p) {
     double n[3] = {0, 0, 0};
-    bool any = false;
     for (Index k = pair_face_offset_[p]; k < pair_face_offset_[p + 1]; ++k) {
-      const Index face = pair_face_[k];
-      const Index* q = &faces_[4 * std::size_t(face)];
-      if (released_[std::size_t(q[0])] | released_[std::size_t(q[1])] | released_[std::size_t(q[2])] |
-          released_[std::size_t(q[3])])
-        continue;
-      const double* a = &face_vector_[3 * std::size_t(face)];
+      const double* a = &face_vector_[3 * pair_face_[k]];
       for (int i = 0; i < 3; ++i) n[i] += a[i];
-      any = true;
     }
-    if (!any) continue;
     const double inv = 1 / std::sqrt(dot(n, n));
     for (int i = 0; i < 3; ++i) normals_[3 * p + i] = n[i] * inv;
   }
@@ -206,7 +199,7 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
     if (p < 0 || std::size_t(p) >= n) throw InputError(msg() << "tiebreak pairs: face refers to pair " << p << " of " << n);
 
   pairs_.resize(n);
-  released_.assign(n, 0);  // before the first normals, which leave out the faces of released pairs
+  released_.assign(n, 0);
   Index max_node = -1;
   for (std::size_t p = 0; p < n; ++p) {
     auto& c = pairs_[p];
@@ -258,6 +251,7 @@ TiebreakPairs::TiebreakPairs(const TractionLawParams& params, TiebreakPairsSpec 
 void TiebreakPairs::build_face_adjacency(const double* x_ref, bool areas_from_faces) {
   const std::size_t n = pairs_.size(), nf = faces_.size() / 4;
   face_vector_.assign(3 * nf, 0.0);
+  face_cut_.assign(nf, 0);
   midpoints_.assign(3 * n, 0.0);
   compute_midpoints(x_ref, 0, n);
   compute_face_vectors(0, nf);
@@ -284,8 +278,14 @@ void TiebreakPairs::build_face_adjacency(const double* x_ref, bool areas_from_fa
       throw InputError(msg() << "tiebreak pairs: pair " << p << " lies on no interface face (no normal)");
 }
 
+void TiebreakPairs::cut_faces_around(std::size_t pair) {
+  if (pair_face_offset_.empty()) return;  // fixed normals: no faces
+  for (Index k = pair_face_offset_[pair]; k < pair_face_offset_[pair + 1]; ++k) face_cut_[std::size_t(pair_face_[k])] = 1;
+}
+
 void TiebreakPairs::release_pair(std::size_t pair) {
   released_[pair] = 1;
+  cut_faces_around(pair);
   dissipated_energy_ += pairs_[pair].area * point_elastic_[pair];
   point_elastic_[pair] = 0;
   history_.release(pair);
@@ -398,6 +398,11 @@ void TiebreakPairs::visit_state(StateVisitor& visitor) {
   visitor.array("normal", normals_);
   visitor.scalar("passes", passes_);
   visitor.fixed_array("released", released_);
+  visitor.fixed_array("face_vector", face_vector_);
+  // Which faces are cut follows from the released pairs (a reader has just replaced them).
+  std::fill(face_cut_.begin(), face_cut_.end(), 0);
+  for (std::size_t p = 0; p < released_.size(); ++p)
+    if (released_[p]) cut_faces_around(p);
   visitor.fixed_array("point_elastic", point_elastic_);
 }
 

@@ -104,6 +104,8 @@ class TiebreakPairs {
   void visit_state(StateVisitor& visitor);
 
  private:
+  // Marks the faces around a released pair as cut (face_cut_).
+  void cut_faces_around(std::size_t pair);
   struct alignas(64) PairConst {  // one cache line per pair
     Index lower = 0, upper = 0;
     double area = 0;     // m^2
@@ -145,7 +147,10 @@ class TiebreakPairs {
   std::vector<Index> pair_face_offset_;    // (num_pairs + 1) CSR of the faces around each pair
   std::vector<Index> pair_face_;
   std::vector<double> midpoints_;          // (num_pairs, 3) mid-surface points of the last refresh (scratch)
-  std::vector<double> face_vector_;        // (num_faces, 3) vector areas of the last refresh (scratch)
+  // (num_faces, 3) vector areas of the last refresh; a cut face (face_cut_) keeps the one it had
+  // when the first of its corner pairs was released, so it is run state.
+  std::vector<double> face_vector_;
+  std::vector<char> face_cut_;             // (num_faces) 1: a corner pair is released (from released_)
   int normal_refresh_interval_ = 1;
   double release_depth_;  // m, TiebreakPairsSpec::release_depth
   std::vector<char> released_;             // (num_pairs) 1: released for good (release_pair)

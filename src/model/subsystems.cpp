@@ -86,7 +86,10 @@ std::vector<Subsystem> subsystems(const Model& model) {
       eroding += (eroding.empty() ? "" : ", ") + m.name + " (" + m.card + ")";
   if (model.control.erode_tsmin > 0) eroding += std::string(eroding.empty() ? "" : ", ") + "time step below erode_tsmin";
   list.push_back({"erosion", !eroding.empty(),
-                  eroding.empty() ? "left out: no material with a failure criterion" : "elements can erode: " + eroding});
+                  eroding.empty() ? "left out: no material with a failure criterion"
+                                  : "elements can erode: " + eroding +
+                                        "; nodes left with nothing acting on them leave the calculation with "
+                                        "their kinetic energy (eroded_kinetic_energy)"});
   list.push_back(erosion_length_scaling(model));
   return list;
 }

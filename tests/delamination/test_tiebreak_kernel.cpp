@@ -252,13 +252,14 @@ TEST(TiebreakKernel, FacesGiveTheNormalAndTheTributaryAreas) {
   EXPECT_NEAR(pairs.elastic_energy(), 0.5 * p.CN * delta * delta * 4 * full, 1e-12 * p.CN * delta * delta * full);
 }
 
-// A pair released because erosion took its ply away no longer shapes its neighbours' normals: its
+// A pair released because erosion took its ply away no longer moves its neighbours' normals: its
 // nodes are wherever the eroded ply left them (here thrown a metre off), so a face with that corner
-// is no part of the interface. A flat 3 x 3 grid of pairs (normal +z), corner pair 0 released and
-// its nodes moved far away, the other pairs opened along z by delta in the elastic range: every
-// remaining pair must open in pure mode I with its force along z (to round-off), the three that
-// share the cut face (1, 3, 4) included. Counting that face turned their normals by 125 degrees.
-TEST(TiebreakKernel, AReleasedPairsFacesLeaveTheNormals) {
+// keeps the vector area it had when the pair was released. A flat 3 x 3 grid of pairs (normal +z),
+// corner pair 0 released and its nodes moved far away, the other pairs opened along z by delta in
+// the elastic range: every remaining pair must open in pure mode I with its force along z (to
+// round-off), the three that share the cut face (1, 3, 4) included. Recomputing that face turned
+// their normals by 125 degrees.
+TEST(TiebreakKernel, AReleasedPairsFacesKeepTheirLastShape) {
   const double a = 0.5e-3;
   auto [s, x] = test::pair_patch_3x3(a);
   std::vector<double> mass(18, 1e-7);
