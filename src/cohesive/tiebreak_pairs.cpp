@@ -47,9 +47,9 @@ void TiebreakPairs::compute_midpoints(const double* x, std::size_t begin, std::s
 
 // Vector areas 1/2 (d_02 x d_13) of faces [begin, end) on the mid-surface of the last
 // compute_midpoints. A cut face keeps the vector it had when erosion cut it: its released corner's
-// mid-point is wherever the eroded ply's nodes are, not the interface (counting it turned the
-// normals of the pairs beside a hole by up to 125 degrees), and dropping the face from the sum
-// would turn those normals at once, in a step, which a damaged pair's law turns into energy.
+// mid-point is wherever the eroded ply's nodes are, not the interface (a face recomputed from it
+// turned the normals of the pairs beside a hole by up to 125 degrees), and dropping the face from
+// the sum would turn those normals in one step, which a damaged pair's law turns into energy.
 void TiebreakPairs::compute_face_vectors(std::size_t begin, std::size_t end) {
   for (std::size_t f = begin; f < end; ++f) {
     if (!face_cut_.empty() && face_cut_[f]) continue;

@@ -27,7 +27,7 @@ std::vector<std::string> history_columns(const model::Model& model, const solver
       for (auto& col : solver->contributors()[c]->history_columns()) cols.push_back(std::move(col));
     }
   }
-  if (solver::can_erode(model))  // only when something can erode (solver::can_erode)
+  if (solver::can_erode(model))
     for (const char* c : {"eroded_elements", "eroded_energy", "eroded_hourglass_energy", "eroded_kinetic_energy"})
       cols.push_back(c);
   for (const HistoryColumns* x : extra)

@@ -162,7 +162,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
     erosion["eroded_energy"] = solver->state().eroded_energy;
     erosion["eroded_hourglass_energy"] = solver->state().eroded_hourglass_energy;
     erosion["eroded_volume"] = eroded_volume(model, *solver);
-    erosion["removed_nodes"] = solver->state().removed_node_count;  // left with nothing acting on them
+    erosion["removed_nodes"] = solver->state().removed_node_count();  // left with nothing acting on them
     erosion["eroded_kinetic_energy"] = solver->state().eroded_kinetic_energy;  // J, what they carried
     output::Json by_part = output::Json::array();
     for (const auto& c : solver->state().erosion) {

@@ -66,7 +66,6 @@ void Solver::remove_freed_nodes(const std::vector<std::pair<int, Index>>& delete
     }
     s.eroded_kinetic_energy += ke;
     s.removed_nodes[i] = 1;
-    ++s.removed_node_count;
     inverse_mass_[i] = 0.0;
   }
 }

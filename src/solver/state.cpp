@@ -54,7 +54,6 @@ void State::visit_state(StateVisitor& sv) {
   sv.scalar("eroded_hourglass_energy", eroded_hourglass_energy);
   sv.array("erosion", erosion);
   sv.array("removed_nodes", removed_nodes);
-  sv.scalar("removed_node_count", removed_node_count);
   sv.scalar("eroded_kinetic_energy", eroded_kinetic_energy);
 }
 

@@ -4,6 +4,7 @@
 // Time levels: x, time at t^n; v at t^{n-1/2} before a step and t^{n+1/2} after it.
 #pragma once
 
+#include <algorithm>
 #include <limits>
 #include <vector>
 
@@ -76,11 +77,11 @@ struct State {
   double eroded_hourglass_energy = 0;  // J, the hourglass part of eroded_energy
   std::vector<ErosionCount> erosion;
   // Nodes erosion left with nothing acting on them, removed from the calculation
-  // (Solver::remove_freed_nodes): (num_nodes) flags, empty until the first removal; how many; and
-  // the kinetic energy they carried when removed (J, in the total, as GLSTAT's eroded kinetic energy).
+  // (Solver::remove_freed_nodes): (num_nodes) flags, empty until the first removal, and the kinetic
+  // energy they carried when removed (J, in the total, as GLSTAT's eroded kinetic energy).
   std::vector<char> removed_nodes;
-  long removed_node_count = 0;
   double eroded_kinetic_energy = 0;
+  long removed_node_count() const { return long(std::count(removed_nodes.begin(), removed_nodes.end(), 1)); }
 
   // Every member above (the balance by its values: its terms are fixed by the model).
   void visit_state(StateVisitor& visitor);

@@ -173,7 +173,7 @@ TEST(Enmass, OrphanNodesStayInContactAsMassPoints) {
       EXPECT_LT(depth, bound);
       EXPECT_GT(vz, v_base);  // bounced off the base (which the punch has set moving down)
     } else {
-      EXPECT_EQ(solver.state().removed_node_count, 4);
+      EXPECT_EQ(solver.state().removed_node_count(), 4);
       EXPECT_NEAR(solver.state().eroded_kinetic_energy, 4 * 0.5 * m_orphan * v0 * v0, 1e-12 * m_orphan * v0 * v0);
       EXPECT_NEAR(z_min, top + 1e-4, 1e-12);  // the lower orphans stayed where they were removed
       EXPECT_EQ(vz, 0.0);
