@@ -179,19 +179,18 @@ class AnsElement {
     for (int m = 0; m < 2; ++m)
       for (int side = 0; side < 2; ++side) {
         const Edge& edge = ty.edge[m][side];
-        double* gi = g_[m][side][0];
-        double* gt = g_[m][side][1];
-        double vi[3] = {}, vt[3] = {};
-        for (int c = 0; c < 3; ++c) {
-          gi[c] = gt[c] = 0;
+        // Sums in locals, stored once: the compiler cannot tell the member g_ from x and v, and
+        // would otherwise store and reload every partial sum.
+        double gi[3] = {}, gt[3] = {}, vi[3] = {}, vt[3] = {};
+        for (int c = 0; c < 3; ++c)
           for (int q = 0; q < 4; ++q) {
             const int k = edge.node[q];
             gi[c] += x[c][k] * edge.di[q], gt[c] += x[c][k] * edge.dt[q];
             vi[c] += v[c][k] * edge.di[q], vt[c] += v[c][k] * edge.dt[q];
           }
-        }
         double d = 0;  // at the mid-step geometry
         for (int c = 0; c < 3; ++c) d += (gi[c] - 0.5 * dt * vi[c]) * vt[c] + (gt[c] - 0.5 * dt * vt[c]) * vi[c];
+        for (int c = 0; c < 3; ++c) g_[m][side][0][c] = gi[c], g_[m][side][1][c] = gt[c];
         tied_[m][side] = 0.5 * d;
         booked_[m][side] = 0;
       }
@@ -259,8 +258,8 @@ class AnsElement {
     for (int m = 0; m < 2; ++m)
       for (int side = 0; side < 2; ++side) {
         const Edge& edge = ty.edge[m][side];
-        const double* gi = g_[m][side][0];
-        const double* gt = g_[m][side][1];
+        const double gi[3] = {g_[m][side][0][0], g_[m][side][0][1], g_[m][side][0][2]};  // locals: fe may alias
+        const double gt[3] = {g_[m][side][1][0], g_[m][side][1][1], g_[m][side][1][2]};
         const double b = 0.5 * booked_[m][side];
         for (int q = 0; q < 4; ++q) {
           const int k = edge.node[q];

@@ -92,14 +92,17 @@ PLYIMPACT_LANE_KERNEL void hex8_gauss_gradient_sum(const LaneVec<9>& A, const in
                                                    double (&out)[3][8]) {
   static_assert(kLanes == 8, "node lanes");
   const auto& dNT = gauss_lane_table().dNT;
-  for (int i = 0; i < 3; ++i) PLYIMPACT_LANES out[i][l] = 0;
+  // A local accumulator, copied out once: out may alias A as far as the compiler knows, which
+  // would make it store and reload the sums after every point.
+  alignas(64) double acc[3][8] = {};
   for (int q = 0; q < count; ++q) {
     const int p = points[q];
     for (int i = 0; i < 3; ++i) {
       const double a0 = A[3 * i][p], a1 = A[3 * i + 1][p], a2 = A[3 * i + 2][p];
-      PLYIMPACT_LANES out[i][l] += a0 * dNT[0][p][l] + a1 * dNT[1][p][l] + a2 * dNT[2][p][l];
+      PLYIMPACT_LANES acc[i][l] += a0 * dNT[0][p][l] + a1 * dNT[1][p][l] + a2 * dNT[2][p][l];
     }
   }
+  for (int i = 0; i < 3; ++i) PLYIMPACT_LANES out[i][l] = acc[i][l];
 }
 
 // Sum over the lanes (the element's points), in lane order: the same sum for any thread count.

@@ -279,11 +279,14 @@ void selective(Material& material, const model::Model& model, const model::Eleme
   const double* X = model.X.data();
   for (Index e = begin; e < end; ++e) {
     // The next element's point histories (8 x hsize values, 1.9 kB for *MAT_054) are the pass's
-    // largest stream; asked for one element ahead (with its stresses) they arrive while
-    // this one computes.
-    if (e + 1 < end) {
-      for (std::size_t b = 0; b < 8 * hsize; b += 8) __builtin_prefetch(&st.history[(8 * std::size_t(e + 1)) * hsize + b]);
+    // largest stream; asked for one element ahead (with its stresses) they arrive while this one
+    // computes. Asked for in two halves, here and after the kinematics: all 35 lines at once are
+    // more misses than the core keeps in flight, and it waits at the prefetches.
+    const bool ahead = e + 1 < end;
+    const std::size_t next_history = 8 * std::size_t(e + 1) * hsize, half = 4 * hsize;
+    if (ahead) {
       for (std::size_t b = 0; b < 48; b += 8) __builtin_prefetch(&st.stress[48 * std::size_t(e + 1) + b]);
+      for (std::size_t b = 0; b < half; b += 8) __builtin_prefetch(&st.history[next_history + b]);
     }
     const Index* conn = &blk.conn[8 * std::size_t(e)];
     double xe[3][8], ve[3][8], Xe[3][8];
@@ -304,6 +307,8 @@ void selective(Material& material, const model::Model& model, const model::Eleme
       record_bad(r, blk.element_id[e], worst, std::isnan(worst));
       continue;
     }
+    if (ahead)
+      for (std::size_t b = (half + 7) / 8 * 8; b < 2 * half; b += 8) __builtin_prefetch(&st.history[next_history + b]);
     const double V = k.V, trDbar = k.trDbar;
     st.volume[e] = V;
     const double rho = rho0 * blk.volume0[e] / V;
