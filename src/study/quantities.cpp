@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "output/json_reader.hpp"
 #include "study/ballistic_limit.hpp"
+#include "study/channel_filter.hpp"
 
 namespace plyimpact::study {
 namespace {
@@ -143,6 +144,28 @@ Values peak_contact_force_time(const RunRecord& r) {
   const auto f = contact_force(r);
   const auto i = std::size_t(std::max_element(f.begin(), f.end()) - f.begin());
   return {{"peak_contact_force_time", r.history.at(i, column(r, "time", "time"))}};
+}
+
+// Largest value of the impactor force filtered at channel frequency class cfc, and its time.
+struct FilteredPeak {
+  double force, time;
+};
+
+FilteredPeak filtered_impactor_peak(const RunRecord& r, double cfc) {
+  const ImpactorForce f = impactor_force(r);
+  const auto filtered = cfc_filter(f.force, f.interval, cfc);
+  const auto peak = std::size_t(std::max_element(filtered.begin(), filtered.end()) - filtered.begin());
+  return {filtered[peak], f.time[peak]};
+}
+
+Values peak_impactor_force_cfc600(const RunRecord& r) {
+  return {{"peak_impactor_force_cfc600", filtered_impactor_peak(r, 600).force}};
+}
+Values peak_impactor_force_cfc600_time(const RunRecord& r) {
+  return {{"peak_impactor_force_cfc600_time", filtered_impactor_peak(r, 600).time}};
+}
+Values peak_impactor_force_cfc1000(const RunRecord& r) {
+  return {{"peak_impactor_force_cfc1000", filtered_impactor_peak(r, 1000).force}};
 }
 
 Values absorbed_energy(const RunRecord& r) {
@@ -298,6 +321,12 @@ Values cycle_count(const RunRecord& r) { return summary_number(r, "cycles", "cyc
 constexpr QuantityDefinition kQuantities[] = {
     {"peak_contact_force", "N", "largest magnitude of the total contact force", peak_contact_force},
     {"peak_contact_force_time", "s", "time of the peak contact force", peak_contact_force_time},
+    {"peak_impactor_force_cfc600", "N",
+     "largest axial force on the rigid impactor, its momentum change per history interval filtered at CFC 600 (SAE J211)",
+     peak_impactor_force_cfc600},
+    {"peak_impactor_force_cfc600_time", "s", "time of peak_impactor_force_cfc600", peak_impactor_force_cfc600_time},
+    {"peak_impactor_force_cfc1000", "N", "as peak_impactor_force_cfc600, filtered at CFC 1000",
+     peak_impactor_force_cfc1000},
     {"absorbed_energy", "J",
      "impactor kinetic energy lost (rigid impactor); else the total kinetic energy lost", absorbed_energy},
     {"residual_velocity", "m/s", "final impactor velocity (a deformable one's centre of mass) along the impact direction (< 0: rebound)",
@@ -325,6 +354,37 @@ constexpr QuantityDefinition kQuantities[] = {
 };
 
 }  // namespace
+
+ImpactorForce impactor_force(const RunRecord& r) {
+  require_rows(r);
+  if (rows(r) < 4) throw NotAvailable("history.csv has fewer than 4 rows: no force record to filter");
+  const auto rc = rigid_impactor(r);
+  const double m = rigid_mass(r, rc);
+  const auto d = impact_direction(r, MotionColumns{rc.x, rc.v});
+  const std::size_t tc = column(r, "time", "time");
+  std::vector<double> t_mid, force, steps;
+  for (std::size_t i = 1; i < rows(r); ++i) {
+    const double dt = r.history.at(i, tc) - r.history.at(i - 1, tc);
+    if (!(dt > 0)) continue;
+    const double dv = dot(row_vec(r, i, rc.v), d) - dot(row_vec(r, i - 1, rc.v), d);
+    t_mid.push_back(r.history.at(i - 1, tc) + 0.5 * dt);
+    force.push_back(-m * dv / dt);
+    steps.push_back(dt);
+  }
+  if (t_mid.size() < 3) throw NotAvailable("history.csv has fewer than 4 distinct times: no force record");
+  std::nth_element(steps.begin(), steps.begin() + std::ptrdiff_t(steps.size() / 2), steps.end());
+  ImpactorForce out;
+  out.interval = steps[steps.size() / 2];
+  for (std::size_t k = 0, j = 0;; ++k) {
+    const double t = t_mid.front() + double(k) * out.interval;
+    if (t > t_mid.back()) break;
+    while (j + 2 < t_mid.size() && t_mid[j + 1] < t) ++j;
+    const double w = std::clamp((t - t_mid[j]) / (t_mid[j + 1] - t_mid[j]), 0.0, 1.0);
+    out.time.push_back(t);
+    out.force.push_back(force[j] + w * (force[j + 1] - force[j]));
+  }
+  return out;
+}
 
 ImpactorTrack impactor_track(const RunRecord& r) {
   require_rows(r);

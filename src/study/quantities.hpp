@@ -35,6 +35,17 @@ struct ImpactorTrack {
 };
 ImpactorTrack impactor_track(const RunRecord& r);
 
+/// The rigid impactor's axial force as its load cell would read it: the momentum it lost along the
+/// impact direction over each history interval, over the interval (the interval's mean force, which
+/// contact ringing faster than the rows cannot alias into, as it does into an instantaneous
+/// sample), at the intervals' middles, resampled on a uniform grid of the median interval for the
+/// CFC filter (channel_filter.hpp). Positive when it resists the impact. @throws NotAvailable
+struct ImpactorForce {
+  double interval = 0;  // s, the grid's spacing
+  std::vector<double> time, force;
+};
+ImpactorForce impactor_force(const RunRecord& r);
+
 struct QuantityValue {
   std::string name;  // the quantity's name, or name_<suffix> for an expanded quantity
   double value;      // SI

@@ -8,6 +8,8 @@
 #include "core/error.hpp"
 #include "output/atomic_file.hpp"
 #include "output/csv_plot.hpp"
+#include "study/channel_filter.hpp"
+#include "study/quantities.hpp"
 
 namespace plyimpact::study {
 namespace {
@@ -33,6 +35,42 @@ void try_plot(const output::CsvPlot& plot, const fs::path& png, PlotLog& log) {
 
 bool any_finite(const std::vector<double>& v) {
   return std::any_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+// <case_dir>/impactor_force.csv and .png: the rigid impactor's interval-mean axial force and the same
+// filtered at CFC 600 and 1000, the curves the peak_impactor_force_* quantities take their peak from.
+// A scene without a rigid impactor has none (no warning: nothing is missing).
+void plot_impactor_force(const fs::path& case_dir, PlotLog& log) {
+  ImpactorForce f;
+  try {
+    f = impactor_force(read_run_record(case_dir.string()));
+  } catch (const NotAvailable&) {
+    return;
+  } catch (const std::exception& e) {
+    log.warnings.push_back(e.what());
+    return;
+  }
+  const auto cfc600 = cfc_filter(f.force, f.interval, 600), cfc1000 = cfc_filter(f.force, f.interval, 1000);
+  std::string text = "time,impactor_force,impactor_force_cfc600,impactor_force_cfc1000\n";
+  char line[128];
+  for (std::size_t i = 0; i < f.time.size(); ++i) {
+    std::snprintf(line, sizeof line, "%.10g,%.10g,%.10g,%.10g\n", f.time[i], f.force[i], cfc600[i], cfc1000[i]);
+    text += line;
+  }
+  const fs::path csv = case_dir / "impactor_force.csv";
+  output::write_text_atomically(csv, text);
+  output::CsvPlot plot;
+  plot.csv = csv;
+  plot.x_column = "time";
+  plot.series = {{"impactor_force", "mean over each history interval"},
+                 {"impactor_force_cfc600", "CFC 600 (SAE J211)"},
+                 {"impactor_force_cfc1000", "CFC 1000"}};
+  plot.title = case_dir.filename().string() + ": axial force on the impactor";
+  plot.x_label = "time (ms)";
+  plot.x_scale = 1e3;
+  plot.y_label = "force (kN)";
+  plot.y_scale = 1e-3;
+  try_plot(plot, case_dir / "impactor_force.png", log);
 }
 
 }  // namespace
@@ -140,6 +178,7 @@ void plot_case(const fs::path& case_dir, PlotLog& log) {
     force.y_label = "force (N)";
     try_plot(force, case_dir / "force_time.png", log);
   }
+  plot_impactor_force(case_dir, log);
   output::CsvPlot energy;
   energy.csv = csv;
   energy.x_column = "time";

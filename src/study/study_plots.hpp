@@ -37,7 +37,8 @@ void plot_residual_velocity(const std::optional<LambertJonasFit>& fit, const std
                             const std::string& velocity_key, double v_max, const std::filesystem::path& dir,
                             PlotLog& log);
 
-/// <case_dir>/force_time.png and <case_dir>/energy_time.png from its history.csv.
+/// <case_dir>/force_time.png and <case_dir>/energy_time.png from its history.csv; with a rigid
+/// impactor also impactor_force.csv and .png (its axial force, raw and CFC-filtered).
 void plot_case(const std::filesystem::path& case_dir, PlotLog& log);
 
 }  // namespace plyimpact::study
