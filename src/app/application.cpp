@@ -240,6 +240,7 @@ int run(const std::string& path, const std::string& out_dir, const Overrides& ov
                 r.completed ? "completed" : r.interrupted ? "INTERRUPTED" : "STOPPED", r.end_time, r.cycles, r.wall_seconds, r.ns_per_element_cycle,
                 r.energy_ratio);
   out << buf;
+  if (!r.termination.empty()) out << "ended by " << r.termination << "\n";
   out << "where the wall time went (summary.json: timing):\n" << run::timing_table(r.timing);
   out << "results: " << r.pvd.string() << " (open in ParaView), " << r.history.string() << ", " << r.summary.string() << "\n";
   if (!r.dump.empty())

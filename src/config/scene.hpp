@@ -181,6 +181,17 @@ struct InitialVelocitySpec {
   SourceLocation where;
 };
 
+// *TERMINATION_CONTACT: the run ends, as a normal termination, once the contact's resultant force has
+// stayed at or below THRES for DUR, counted from ACTIM on (run/contact_termination.hpp).
+struct TerminationContactSpec {
+  std::string contact;  // CID: the contact's name
+  double ACTIM = 0;     // s, activation time
+  int DOF = 0;          // 0: magnitude of the resultant; 1, 2, 3: its global x, y, z component
+  double THRES = 0;     // N, largest force that counts as none
+  double DUR = 0;       // s, how long it must stay so
+  SourceLocation where;
+};
+
 struct ControlSpec {
   double termination_time = 0;  // s (required)
   double tssfac = 0.9;          // *CONTROL_TIMESTEP TSSFAC
@@ -198,6 +209,7 @@ struct ControlSpec {
   long max_elements = 0;
   long cycle_limit = 0;
   int threads = 0;              // 0 = OpenMP default
+  std::optional<TerminationContactSpec> termination_contact;
 };
 
 struct OutputSpec {

@@ -53,7 +53,8 @@ void read_mass_scaling(const Reader& r, ControlSpec& c) {
 ControlSpec read_control(const Reader& r) {
   r.require_map("a mapping with termination_time and optional tssfac, dt_min_ratio, ...");
   r.allow_keys({"termination_time", "tssfac", "dt_min_ratio", "energy_ratio_limit", "erode_tsmin",
-                "hourglass_warn_ratio", "max_cycles", "max_elements", "cycle_limit", "threads", "dt2ms", "endmas"});
+                "hourglass_warn_ratio", "max_cycles", "max_elements", "cycle_limit", "threads", "dt2ms", "endmas",
+                "termination_contact"});
   ControlSpec c;
   c.termination_time = r.quantity("termination_time", u::time, Limits::positive("termination time"));
   c.tssfac = r.quantity_or("tssfac", u::dimensionless, c.tssfac, Limits::interval(0, true, 1, false, "tssfac"));
@@ -70,6 +71,22 @@ ControlSpec read_control(const Reader& r) {
   c.threads = static_cast<int>(r.integer_or("threads", c.threads, Limits::interval(0, false, 4096, false, "threads")));
   read_mass_scaling(r, c);
   return c;
+}
+
+// control.termination_contact, read once the contacts are known (CID names one of them).
+TerminationContactSpec read_termination_contact(const Reader& r, const Scene& scene) {
+  r.require_map("a mapping {contact: NAME, ACTIM: time, DOF: 0-3, THRES: force, DUR: time} (*TERMINATION_CONTACT)");
+  r.allow_keys({"contact", "ACTIM", "DOF", "THRES", "DUR"});
+  TerminationContactSpec t;
+  t.where = r.where();
+  t.ACTIM = r.quantity_or("ACTIM", u::time, 0.0,
+                          Limits::interval(0, false, scene.control.termination_time, true,
+                                           "ACTIM (activation time, before termination_time)"));
+  t.DOF = r.int_choice_or("DOF", 0, {0, 1, 2, 3});
+  t.THRES = r.quantity_or("THRES", u::force, 0.0, Limits::non_negative("THRES (force counted as none)"));
+  t.DUR = r.quantity_or("DUR", u::time, 0.0, Limits::non_negative("DUR (duration of no force before the stop)"));
+  t.contact = r.reference("contact", names_of(scene.contacts), "contact", "contacts");
+  return t;
 }
 
 OutputSpec read_output(const Reader& r) {
@@ -858,6 +875,8 @@ Scene read_scene(const Reader& root, detail::Context& ctx) {
   if (const auto rb = root.find("rigid_bodies")) scene.rigid_bodies = read_rigid_bodies(*rb, scene);
   if (const auto rw = root.find("rigid_walls")) scene.rigid_walls = read_rigid_walls(*rw, scene);
   if (const auto c = root.find("contacts")) scene.contacts = read_contacts(*c, scene);
+  if (const auto t = root.at("control", "").find("termination_contact"))
+    scene.control.termination_contact = read_termination_contact(*t, scene);
   if (const auto g = root.find("gravity")) scene.gravity = g->as_vec3(u::acceleration);
   if (const auto c = root.find("coupon")) scene.coupon = detail::read_coupon(*c, scene);
   return scene;

@@ -91,7 +91,19 @@ std::vector<Subsystem> subsystems(const Model& model) {
                                         "; nodes left with nothing acting on them leave the calculation with "
                                         "their kinetic energy (eroded_kinetic_energy)"});
   list.push_back(erosion_length_scaling(model));
+  const auto& end = model.control.termination_contact;
+  list.push_back({"termination_contact", end.has_value(),
+                  end ? "the run ends once " + describe_termination_contact(*end) + ", or at termination_time"
+                      : "left out: the run goes to termination_time"});
   return list;
+}
+
+std::string describe_termination_contact(const config::TerminationContactSpec& spec) {
+  const char* what[] = {"resultant force", "|x component|", "|y component|", "|z component|"};
+  std::ostringstream s;
+  s << "contact '" << spec.contact << "' has its " << what[spec.DOF] << " at or below " << spec.THRES << " N for "
+    << spec.DUR << " s (timed from ACTIM " << spec.ACTIM << " s)";
+  return s.str();
 }
 
 }  // namespace plyimpact::model

@@ -19,4 +19,7 @@ struct Subsystem {
 
 std::vector<Subsystem> subsystems(const Model& model);
 
+// control.termination_contact's rule in words (check, the run's end line, summary.json).
+std::string describe_termination_contact(const config::TerminationContactSpec& spec);
+
 }  // namespace plyimpact::model

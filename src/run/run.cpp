@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/error.hpp"
+#include "run/contact_termination.hpp"
 #include "run/coupon_probe.hpp"
 #include "run/frame_writer.hpp"
 #include "run/history_writer.hpp"
@@ -93,13 +94,15 @@ RunReport run_loop(const model::Model& model, const std::vector<RunObserver*>& o
         const auto t1 = Clock::now();
         observers[k]->after_cycle(*solver);
         observer_seconds[k] += seconds_since(t1);
+        if (report.termination.empty()) report.termination = observers[k]->termination();
       }
       if (!options.dump_file.empty() && dumps.due(solver->state().time)) {
         dump();
         dumps.advance(solver->state().time);
       }
+      if (!report.termination.empty()) break;
     }
-    report.completed = solver->state().time >= t_end * (1 - 1e-12);
+    report.completed = solver->state().time >= t_end * (1 - 1e-12) || !report.termination.empty();
     if (!report.completed && !report.interrupted) report.stop_reason = "max_cycles reached before the termination time";
     // Before the observers' stop: the frame an early stop writes is not part of the run state.
     if (!options.dump_file.empty()) dump();
@@ -149,7 +152,10 @@ RunReport run_model(const model::Model& model, const RunOptions& options) {
   if (options.progress) progress = std::make_unique<ProgressLine>(*options.progress, options.progress_in_place, t_end, t_start);
 
   // Stop order is the order of the warnings in summary.json; the summary comes last.
+  std::optional<ContactTermination> termination;
+  if (model.control.termination_contact) termination.emplace(*model.control.termination_contact);
   std::vector<RunObserver*> observers = {&frames, &interfaces, &history};
+  if (termination) observers.push_back(&*termination);
   if (progress) observers.push_back(progress.get());
   for (RunObserver* o : std::initializer_list<RunObserver*>{&hourglass, &contact_energy, &penetrations, &energy_balance, &summary})
     observers.push_back(o);

@@ -43,6 +43,7 @@ struct RunReport {
   bool interrupted = false;      // stopped by SIGINT or SIGTERM (the state is sound)
   bool failed = false;           // stopped by a RunError (the state may not be sound)
   std::string stop_reason;       // empty when completed
+  std::string termination;       // a termination rule that ended the run before termination_time (completed)
   long cycles = 0;
   double end_time = 0;
   double wall_seconds = 0;          // whole run including output
@@ -66,6 +67,9 @@ class RunObserver {
   // The observer's share of the run state (nothing for a stateless observer).
   virtual void visit_state(StateVisitor& visitor) { (void)visitor; }
   virtual void after_cycle(const solver::Solver& solver) { (void)solver; }
+  // Non-empty once the observer's termination rule (a *TERMINATION_ card) is met: the loop then ends
+  // the run as completed, with this text as the reason.
+  virtual std::string termination() const { return {}; }
   // Its row in the run's timing (observers of one name share a row).
   virtual std::string_view timing_name() const { return "run checks"; }
   // In the order the observers were registered: a later one sees the warnings of earlier ones.

@@ -106,6 +106,7 @@ void SummaryWriter::stop(const solver::Solver* solver, RunReport& report) {
   j["cycles"] = report.cycles;
   j["end_time"] = report.end_time;
   j["termination_time"] = model.control.termination_time;
+  if (!report.termination.empty()) j["terminated_by"] = report.termination;
   j["wall_seconds"] = std::chrono::duration<double>(Clock::now() - t_start_).count();
   j["nodes"] = std::uint64_t(model.num_nodes());
   j["elements"] = std::uint64_t(model.num_elements());

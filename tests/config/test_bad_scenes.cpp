@@ -79,6 +79,12 @@ std::string error_of(const std::string& text, const std::string& label) {
 }
 
 const std::vector<BadCase> kCases = {
+    {"termination_contact_unknown_contact", "  termination_time: 1.0e-5\n",
+     "  termination_time: 1.0e-5\n  termination_contact: {contact: tup, DUR: 1 us}\n",
+     {"scenes/bad.yaml:4:", "control.termination_contact.contact", "'tup'"}},
+    {"termination_contact_negative_dur", "  termination_time: 1.0e-5\n",
+     "  termination_time: 1.0e-5\n  termination_contact: {DUR: -1 us}\n",
+     {"scenes/bad.yaml:4:", "control.termination_contact.DUR", "DUR (duration of no force before the stop)"}},
     {"unknown_key", "    EA: 157 GPa", "    EAA: 157 GPa",
      {"scenes/bad.yaml:13:5: materials.ply.EAA: unknown key 'EAA' (did you mean 'EA'?)", "; found 'EAA'",
       "; allowed keys card, RO, EA,"}},
