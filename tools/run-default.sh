@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # README command 1: set up, build and run the default scene, the seed's low-velocity impact study
 # (configs/low_velocity_impact.yaml: ASTM D7136 T800S/M21 plate, rigid 16 mm tup, 26.8 J, the whole
-# event to 5 ms). About 4 minutes (after the build) on the project's 2-core machine.
+# event, until the force along the tup's axis is back to zero). About 4 to 5 minutes (after the
+# build) on the project's 2-core machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh
