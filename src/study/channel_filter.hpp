@@ -1,6 +1,5 @@
 // Channel frequency class (CFC) filtering of a sampled record, as crash and impact test laboratories
-// filter force and acceleration channels before reading a peak (SAE J211-1, Appendix C; the same
-// classes LS-PrePost offers for RCFORC and GLSTAT curves).
+// filter force and acceleration channels before reading a peak (SAE J211-1, Appendix C).
 //
 // The filter is a two-pole low-pass Butterworth, designed by the bilinear transform, run forward and
 // then backward over the record: no phase shift, and the magnitude of one pass squared,
