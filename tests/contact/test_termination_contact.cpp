@@ -4,8 +4,8 @@
 // from ACTIM (half the Hertz contact time, mid-impact) the first cycle at or below THRES starts the
 // force-free stretch, and the run must end at the first cycle DUR after it. run_loop with the rule
 // must end there exactly (same model, same cycles: the cycle count and the time are equal, not
-// close), as completed, long before the scene's termination_time of 1 s, with the cap's velocity of
-// the reference at that cycle. THRES 0 (the resultant is exactly zero once no spring acts) and a
+// close), as completed, long before the scene's termination_time of 1 s; in the reference the cap
+// moves away from the block by then. THRES 0 (the resultant is exactly zero once no spring acts) and a
 // threshold of 10 % of the Hertz peak, which the rebound's tail crosses earlier.
 #include <gtest/gtest.h>
 
