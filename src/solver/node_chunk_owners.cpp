@@ -9,23 +9,35 @@ namespace plyimpact::solver {
 NodeChunkOwners::NodeChunkOwners(const model::Model& model, std::size_t chunk_nodes)
     : model_(model), chunk_nodes_(chunk_nodes) {}
 
-const std::vector<std::vector<long>>& NodeChunkOwners::for_threads(int nt) {
-  if (tables_.size() <= std::size_t(nt)) tables_.resize(std::size_t(nt) + 1);
-  Table& table = tables_[std::size_t(nt)];
-  if (table.empty()) table = build(nt);
-  return table;
+const std::vector<std::vector<long>>& NodeChunkOwners::for_bounds(std::span<const long> bounds) {
+  const std::size_t nt = bounds.size() - 1;
+  if (tables_.size() <= nt) {
+    tables_.resize(nt + 1);
+    bounds_.resize(nt + 1);
+  }
+  if (tables_[nt].empty() || !std::equal(bounds.begin(), bounds.end(), bounds_[nt].begin(), bounds_[nt].end())) {
+    tables_[nt] = build(bounds);
+    bounds_[nt].assign(bounds.begin(), bounds.end());
+  }
+  return tables_[nt];
 }
 
-NodeChunkOwners::Table NodeChunkOwners::build(int nt) const {
+const std::vector<std::vector<long>>& NodeChunkOwners::for_threads(int nt) {
+  const long num_chunks = long(model_.schedule.chunks.size());
+  even_.resize(std::size_t(nt) + 1);
+  for (int t = 0; t <= nt; ++t) even_[std::size_t(t)] = t < nt ? thread_range(num_chunks, t, nt).begin : num_chunks;
+  return for_bounds(even_);
+}
+
+NodeChunkOwners::Table NodeChunkOwners::build(std::span<const long> bounds) const {
+  const int nt = int(bounds.size()) - 1;
   const std::size_t n = model_.num_nodes();
   const std::size_t num_node_chunks = (n + chunk_nodes_ - 1) / chunk_nodes_;
   // votes[chunk * nt + t]: element-node incidences of thread t's element chunks in this node chunk.
   std::vector<std::size_t> votes(num_node_chunks * std::size_t(nt), 0);
   const auto& schedule = model_.schedule;
-  const int num_chunks = int(schedule.chunks.size());
   for (int t = 0; t < nt; ++t) {
-    const ThreadRange range = thread_range(num_chunks, t, nt);
-    for (long c = range.begin; c < range.end; ++c) {
+    for (long c = bounds[std::size_t(t)]; c < bounds[std::size_t(t) + 1]; ++c) {
       const auto& chunk = schedule.chunks[std::size_t(c)];
       const auto& conn = model_.blocks[std::size_t(chunk.block)].conn;
       for (std::size_t k = 8 * std::size_t(chunk.begin); k < 8 * std::size_t(chunk.end); ++k)

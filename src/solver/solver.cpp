@@ -25,6 +25,13 @@ constexpr std::size_t kNodeChunk = 1024;
 // at a few hundred elements the few synchronisation points per cycle outweigh the work. The
 // arithmetic and the summation order are the same either way.
 constexpr std::size_t kParallelMinElements = 1024;
+// The chunk plan is reviewed every this many parallel element passes, from the chunks' wall times
+// over them (a few seconds of a run like the default scene: enough passes that a host's hiccup is
+// a small part of a chunk's sum, few enough to follow the erosion), and replaced when its
+// simulation gives the new plan a pass at least this much shorter (a new split moves nodes between
+// the cores' caches once).
+constexpr long kReplanPasses = 1000;
+constexpr double kReplanGain = 0.02;
 
 // Indices into phase_times_ (the contributors follow).
 constexpr std::size_t kNodeUpdate = 0, kElementPass = 1, kElementChecks = 2, kFirstContributor = 3;
@@ -65,7 +72,9 @@ void merge(ChunkResult& total, const ChunkResult& r) {
 }
 }
 
-Solver::Solver(const model::Model& model) : model_(model), node_owners_(model, kNodeChunk) {
+Solver::Solver(const model::Model& model)
+    : model_(model), chunk_plan_(model), replan_passes_(kReplanPasses), replan_gain_(kReplanGain),
+      node_owners_(model, kNodeChunk) {
   if (model.control.dt2ms != 0 && !model.mass_scaling.applied)
     throw RunError("control.dt2ms is set but the model's mass was not scaled (solver::apply_mass_scaling)");
   warnings_ = model.mass_scaling.warnings;
@@ -90,7 +99,8 @@ Solver::Solver(const model::Model& model) : model_(model), node_owners_(model, k
   for (std::size_t i = 0; i < n; ++i) inverse_mass_[i] = node_mass_[i] > 0 ? 1.0 / node_mass_[i] : 0.0;
   parallel_ = model.num_elements() >= kParallelMinElements;
   if (rigid_) rigid_->set_parallel(parallel_);
-  build_chunk_dependencies();
+  chunk_seconds_.assign(model.schedule.chunks.size(), 0.0);
+  chunk_done_.assign(model.schedule.chunks.size(), 0);
   alive_.resize(model.blocks.size());
   chunk_ranges_.resize(model.schedule.chunks.size());
   state_.blocks.resize(model.blocks.size());
@@ -317,7 +327,8 @@ void Solver::step() {
   const double* __restrict mass = node_mass_.data();
   const double* __restrict inv_mass = inverse_mass_.data();
   const int threads = parallel_ ? omp_get_max_threads() : 1;
-  const auto& owned = node_owners_.for_threads(threads);
+  const auto& owned = threads > 1 && chunk_plan_.threads() == threads ? node_owners_.for_bounds(chunk_plan_.bounds())
+                                                                     : node_owners_.for_threads(threads);
 #pragma omp parallel num_threads(threads) if (threads > 1)
   for (long chunk : owned[std::size_t(omp_get_thread_num())]) {
     const std::size_t begin = std::size_t(chunk) * kNodeChunk, end = std::min(n, begin + kNodeChunk);
@@ -451,61 +462,34 @@ void Solver::element_pass(double dt) {
       for (int c : color) run_chunk(c);
     return;
   }
-  // Each thread owns a contiguous range of chunks (the part of the mesh its static node update
-  // touches, so its data stays in its cache) and runs them colour by colour; before a chunk it
-  // waits until the chunks of lower colour that share a node with it are done. Every node then
-  // receives its forces in colour order, as in the one-thread pass, without a barrier per colour
-  // (a colour with a single chunk no longer idles the other threads). No deadlock: a thread waits
-  // only for lower colours, which their owners reach first.
+  // Each thread runs the chunks the plan gives it, in the plan's order (solver/chunk_plan.hpp); before
+  // a chunk it waits until the chunks of lower colour that share a node with it are done. Every node
+  // then receives its forces in colour order, as in the one-thread pass, without a barrier per colour.
+  keep_chunk_plan(threads);
 #pragma omp parallel num_threads(threads)
   {
-    const ThreadRange mine = thread_range(long(schedule.chunks.size()), omp_get_thread_num(), omp_get_num_threads());
-    const int lo = int(mine.begin), hi = int(mine.end);
-    for (const auto& color : schedule.colors) {
-      auto it = std::lower_bound(color.begin(), color.end(), lo);
-      for (; it != color.end() && *it < hi; ++it) {
-        const int c = *it;
-        for (Index p = chunk_preds_start_[std::size_t(c)]; p < chunk_preds_start_[std::size_t(c) + 1]; ++p)
-          wait_for_pass(chunk_done_[std::size_t(chunk_preds_[std::size_t(p)])], pass);
-        run_chunk(c);
-        __atomic_store_n(&chunk_done_[std::size_t(c)], pass, __ATOMIC_RELEASE);
-      }
+    for (int c : chunk_plan_.order(omp_get_thread_num())) {
+      for (int p : chunk_plan_.predecessors(c)) wait_for_pass(chunk_done_[std::size_t(p)], pass);
+      const auto t0 = Clock::now();
+      run_chunk(c);
+      chunk_seconds_[std::size_t(c)] += seconds(t0, Clock::now());
+      __atomic_store_n(&chunk_done_[std::size_t(c)], pass, __ATOMIC_RELEASE);
     }
   }
 }
 
-void Solver::build_chunk_dependencies() {
-  // Chunk c depends on every chunk of lower colour that shares a node with it.
-  const auto& schedule = model_.schedule;
-  const std::size_t num_chunks = schedule.chunks.size();
-  std::vector<int> color(num_chunks, 0);
-  for (std::size_t k = 0; k < schedule.colors.size(); ++k)
-    for (int c : schedule.colors[k]) color[std::size_t(c)] = int(k);
-  std::vector<std::vector<int>> node_chunks(model_.num_nodes());
-  for (std::size_t c = 0; c < num_chunks; ++c) {
-    const auto& ch = schedule.chunks[c];
-    const auto& conn = model_.blocks[ch.block].conn;
-    for (Index e = ch.begin; e < ch.end; ++e)
-      for (int k = 0; k < 8; ++k) {
-        auto& list = node_chunks[std::size_t(conn[8 * std::size_t(e) + k])];
-        if (list.empty() || list.back() != int(c)) list.push_back(int(c));
-      }
+void Solver::keep_chunk_plan(int threads) {
+  if (chunk_plan_.threads() != threads) {  // the first parallel pass, or another thread count
+    chunk_plan_.plan(threads, passes_since_plan_ > 0 ? std::span<const double>(chunk_seconds_)
+                                                      : std::span<const double>(chunk_plan_.element_count_costs()));
+    std::fill(chunk_seconds_.begin(), chunk_seconds_.end(), 0.0);
+    passes_since_plan_ = 0;
+    return;
   }
-  std::vector<std::vector<int>> preds(num_chunks);
-  for (const auto& list : node_chunks)
-    for (int a : list)
-      for (int b : list)
-        if (color[std::size_t(b)] < color[std::size_t(a)]) preds[std::size_t(a)].push_back(b);
-  chunk_preds_start_.assign(num_chunks + 1, 0);
-  chunk_preds_.clear();
-  for (std::size_t c = 0; c < num_chunks; ++c) {
-    auto& p = preds[c];
-    std::sort(p.begin(), p.end());
-    p.erase(std::unique(p.begin(), p.end()), p.end());
-    chunk_preds_.insert(chunk_preds_.end(), p.begin(), p.end());
-    chunk_preds_start_[c + 1] = Index(chunk_preds_.size());
-  }
-  chunk_done_.assign(num_chunks, 0);
+  if (++passes_since_plan_ < replan_passes_) return;
+  chunk_plan_.plan(threads, chunk_seconds_, replan_gain_);
+  std::fill(chunk_seconds_.begin(), chunk_seconds_.end(), 0.0);
+  passes_since_plan_ = 0;
 }
 
 void Solver::check_after_pass(double dt_used) {

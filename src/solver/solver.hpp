@@ -19,6 +19,7 @@
 #include "model/model.hpp"
 #include "solver/element_update.hpp"
 #include "solver/force_contributor.hpp"
+#include "solver/chunk_plan.hpp"
 #include "solver/node_chunk_owners.hpp"
 #include "solver/penalty_contacts.hpp"
 #include "solver/rigid_body.hpp"
@@ -57,6 +58,13 @@ class Solver {
   // Let the solver pick one or all OpenMP threads by timing both now and then (ThreadChoice); for
   // runs whose thread count the user left open. Off by default: the current count is used.
   void choose_threads_by_timing(bool on) { thread_choice_.enable(on && parallel_); }
+  // How often the parallel element pass's chunk plan is reviewed (every `passes` parallel passes)
+  // and how much shorter a new plan's simulated pass must be to replace it (solver/chunk_plan.hpp).
+  // The defaults suit runs; tests shorten them to exercise re-planning.
+  void set_chunk_plan_review(long passes, double min_gain) {
+    replan_passes_ = passes;
+    replan_gain_ = min_gain;
+  }
 
   // Wall seconds spent in each part of the cycle since construction (profiling; a few clock reads
   // per cycle). Names: "node update", "element pass", "element checks" (sums, erosion, crashfront)
@@ -95,8 +103,9 @@ class Solver {
 
  private:
   void element_pass(double dt);
-  // chunk_preds_ from the schedule (the parallel element pass's order constraints).
-  void build_chunk_dependencies();
+  // Before a parallel element pass on `threads` threads: a chunk plan for them, re-planned from the
+  // measured chunk times every kReplanPasses parallel passes.
+  void keep_chunk_plan(int threads);
   void check_after_pass(double dt_used);
   void count_erosion(const ErodedElement& el);
   // Alive ranges of every chunk from alive_ (after a deletion or reading a state).
@@ -134,10 +143,13 @@ class Solver {
   std::vector<double> curve_value_;        // (num curves) value at t^{n+1/2}
   std::vector<ChunkResult> chunk_results_; // (num chunks)
   bool parallel_ = false;                  // the model is large enough for the parallel passes
-  // Parallel element pass: per chunk (CSR) the chunks of lower colour sharing a node with it, and
-  // the number of the last pass each chunk has finished.
-  std::vector<Index> chunk_preds_start_;
-  std::vector<int> chunk_preds_;
+  // Parallel element pass: which thread runs which chunks in which order, the wall time each chunk
+  // took since the plan was last reviewed, and the number of the last pass each chunk has finished.
+  ChunkPlan chunk_plan_;
+  std::vector<double> chunk_seconds_;
+  long passes_since_plan_ = 0;
+  long replan_passes_;
+  double replan_gain_;
   std::vector<std::uint64_t> chunk_done_;
   std::uint64_t element_passes_ = 0;
   std::vector<double> node_chunk_ke_;      // (num node chunks) deterministic kinetic-energy sums

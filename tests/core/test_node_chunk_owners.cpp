@@ -54,6 +54,30 @@ TEST(NodeChunkOwners, NodesGoToTheThreadOfTheirElementsOrOfTheirBodysPlacement) 
     EXPECT_EQ(owner[n], n < std::size_t(body_nodes) + plate_nodes ? 0 : 1) << "plate node " << n;
 }
 
+// Uneven element ranges (the chunk plan's, solver/chunk_plan): with every element chunk on thread 0,
+// every plate node is thread 0's; the body's nodes still go to the threads that place them. Back to
+// even ranges, plate 2 is thread 1's again (the table follows its bounds).
+TEST(NodeChunkOwners, NodesFollowUnevenElementRanges) {
+  const model::Model model = body_and_two_plates();
+  const long body_nodes = long(model.rigid_bodies[0].nodes.size());
+  const long chunks = long(model.schedule.chunks.size());
+  solver::NodeChunkOwners owners(model, 1);
+  const std::vector<long> all_on_0{0, chunks, chunks};
+  const auto owner_of = [&](const std::vector<std::vector<long>>& table) {
+    std::vector<int> owner(model.num_nodes(), -1);
+    for (int t = 0; t < 2; ++t)
+      for (long c : table[std::size_t(t)]) owner[std::size_t(c)] = t;
+    return owner;
+  };
+  std::vector<int> owner = owner_of(owners.for_bounds(all_on_0));
+  for (std::size_t n = std::size_t(body_nodes); n < model.num_nodes(); ++n) EXPECT_EQ(owner[n], 0) << "plate node " << n;
+  const auto& nodes = model.rigid_bodies[0].nodes;
+  for (long k = 0; k < body_nodes; ++k)
+    EXPECT_EQ(owner[std::size_t(nodes[std::size_t(k)])], k < body_nodes / 2 ? 0 : 1) << "body node " << k;
+  owner = owner_of(owners.for_threads(2));
+  EXPECT_EQ(owner.back(), 1);
+}
+
 TEST(NodeChunkOwners, EveryChunkOnceInIncreasingOrderForAnyThreadCount) {
   const model::Model model = body_and_two_plates();
   solver::NodeChunkOwners owners(model, 1024);
