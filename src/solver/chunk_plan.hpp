@@ -9,9 +9,8 @@
 // predecessors are done, the one that can start first, ties going to the longest chain of work
 // behind it. That puts first the chunks another thread waits for. In a laminate two plies of one
 // angle meshed as one (no interface between them) share nodes; where the range boundary falls between
-// them, running each thread's chunks colour by colour put the lower ply's chunks last on one thread
-// while the other waited for them before its upper-ply chunks, with a core idle for about a
-// sixteenth of the default scene's pass.
+// them, running each thread's chunks colour by colour puts the lower ply's chunks last on one thread
+// while the other waits for them before it can run the upper ply's.
 //   No deadlock whatever the costs: every thread follows one global order (the simulated start
 // times), which lists each chunk after its predecessors, so the earliest unfinished chunk of that
 // order can always run.
