@@ -236,7 +236,9 @@ TEST(RigidImpactor, MomentumOfBodyAndBlockConserved) {
 // separation) and the work the contact took from the bodies, weighted as the integrator applies
 // its forces, is 2.3 % of the initial energy, so the bodies really lost it. Suspected: the 18
 // nodes of the flat faces engage in the same step part way through it, each costing the bodies
-// 0.5 k |g| (v dt - |g|) more than its spring holds, and the release does not give it back.
+// 0.5 k |g| (v dt - |g|) more than its spring holds, and the release does not give it back. The
+// SOFT 1 stiffness grows as the step falls, so TSSFAC is no convergence parameter here: worst
+// deviation 2.1, 0.62, 0.60, 0.14 % at TSSFAC 0.9, 0.45, 0.225, 0.1125.
 TEST(RigidImpactor, DISABLED_EnergyOfBodyAndBlockConserved) {
   const model::Model model = test::model_from_yaml(rigid_impactor_scene(), "rigid_impactor.yaml");
   solver::Solver solver(model);
