@@ -137,12 +137,14 @@ void ChunkPlan::take_order(std::span<const long> bounds) {
   const int nt = int(bounds.size()) - 1;
   order_.resize(n);
   for (std::size_t c = 0; c < n; ++c) order_[c] = int(c);
-  // Costs are positive, so a chunk starts strictly after each of its predecessors: this order lists
-  // every chunk after them, and each thread's chunks in the order the simulation ran them.
+  // Each thread's chunks in the order the simulation started them. Costs are positive, so a chunk
+  // starts strictly after each of its predecessors: the start times are the one global order that
+  // lists every chunk after them. (std::sort: a stable sort would allocate.)
   std::sort(order_.begin(), order_.end(), [&](int a, int b) {
-    return start_[std::size_t(a)] < start_[std::size_t(b)] || (start_[std::size_t(a)] == start_[std::size_t(b)] && a < b);
+    const std::size_t i = std::size_t(a), j = std::size_t(b);
+    if (owner_[i] != owner_[j]) return owner_[i] < owner_[j];
+    return start_[i] < start_[j] || (start_[i] == start_[j] && a < b);
   });
-  std::stable_sort(order_.begin(), order_.end(), [&](int a, int b) { return owner_[std::size_t(a)] < owner_[std::size_t(b)]; });
   order_start_.assign(std::size_t(nt) + 1, 0);
   for (std::size_t c = 0; c < n; ++c) ++order_start_[std::size_t(owner_[c]) + 1];
   for (int t = 0; t < nt; ++t) order_start_[std::size_t(t) + 1] += order_start_[std::size_t(t)];

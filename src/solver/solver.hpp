@@ -17,9 +17,9 @@
 #include <vector>
 
 #include "model/model.hpp"
+#include "solver/chunk_plan.hpp"
 #include "solver/element_update.hpp"
 #include "solver/force_contributor.hpp"
-#include "solver/chunk_plan.hpp"
 #include "solver/node_chunk_owners.hpp"
 #include "solver/penalty_contacts.hpp"
 #include "solver/rigid_body.hpp"
@@ -103,8 +103,8 @@ class Solver {
 
  private:
   void element_pass(double dt);
-  // Before a parallel element pass on `threads` threads: a chunk plan for them, re-planned from the
-  // measured chunk times every kReplanPasses parallel passes.
+  // Before a parallel element pass on `threads` threads: a chunk plan for them, reviewed from the
+  // measured chunk times every replan_passes_ parallel passes (set_chunk_plan_review).
   void keep_chunk_plan(int threads);
   void check_after_pass(double dt_used);
   void count_erosion(const ErodedElement& el);
