@@ -125,8 +125,10 @@ void one_point(Material& material, const model::Model& model, const model::Eleme
       dIE_old[l] = V[l] * p_old * dt;
       dIE[l] = dIE_old[l] + V[l] * p_new * dt;
     }
-    alignas(64) double cbrtV[kLanes];  // V^(1/3): hourglass area scale
-    element::hex8_cube_root_volume_lanes(Jx, V, cbrtV);
+    // V^(1/3), the viscous laws' area scale; only they pay for its seven Newton divides (GCC keeps
+    // the unused lanes' dependent chain otherwise).
+    alignas(64) double cbrtV[kLanes];
+    if constexpr (HG::kViscous) element::hex8_cube_root_volume_lanes(Jx, V, cbrtV);
     alignas(64) double q_old[kLanes];
     for (int l = 0; l < kLanes; ++l) q_old[l] = st.bulk_q[elem[l]];
     PLYIMPACT_LANES {
