@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <string>
 
 #include "config/scene_loader.hpp"
@@ -51,7 +52,14 @@ static model::Model make_model(int nx, int ny, int nz) {
 int bench_scene(int argc, char** argv);  // bench_scene.cpp
 
 int main(int argc, char** argv) {
-  if (argc > 1 && std::string(argv[1]) == "--scene") return bench_scene(argc, argv);
+  if (argc > 1 && std::string(argv[1]) == "--scene") {
+    try {
+      return bench_scene(argc, argv);
+    } catch (const std::exception& e) {  // a scene or override error: its message, not an abort
+      std::fprintf(stderr, "bench: %s\n", e.what());
+      return 1;
+    }
+  }
   const double max_elements = argc > 1 ? std::atof(argv[1]) : 1e6;
   const int max_threads = argc > 2 ? std::atoi(argv[2]) : 2;
   struct Size { int nx, ny, nz, cycles; };
