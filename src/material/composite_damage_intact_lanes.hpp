@@ -73,12 +73,15 @@ PLYIMPACT_LANE_KERNEL double voigt_bilinear_lane(double x0, double x1, double x2
   return sum;
 }
 
-// Qo: old material axes (rows a, b, c, global components); R: incremental rotation; s_old: stress
-// in global axes; D: rate of deformation; dt: the step.
-PLYIMPACT_LANE_KERNEL void composite_intact_lanes(const CompositeDamageParams& p, const LaneVec<9>& Qo,
-                                                  const LaneVec<9>& R, const LaneVec<6>& s_old,
-                                                  const LaneVec<6>& D, double dt, const IntactLaneHistory& h,
-                                                  IntactLaneResult& out) {
+// composite_intact_lanes for CRIT 55 (kCrit55) or 54. The card's choices are template arguments or
+// a second lane loop rather than selects in the lane body: a select computes both sides, and the
+// matrix criterion of the other CRIT, EFS's effective strain and TFAIL's step ratio cost three
+// divides and a square root per lane group that most cards never read.
+template <bool kCrit55>
+PLYIMPACT_LANE_KERNEL void composite_intact_lanes_for(const CompositeDamageParams& p, const LaneVec<9>& Qo,
+                                                      const LaneVec<9>& R, const LaneVec<6>& s_old,
+                                                      const LaneVec<6>& D, double dt, const IntactLaneHistory& h,
+                                                      IntactLaneResult& out) {
   const double* C = p.C.data();
   const double c00 = C[0], c01 = C[1], c02 = C[2], c10 = C[6], c11 = C[7], c12 = C[8];
   const double c20 = C[12], c21 = C[13], c22 = C[14];
@@ -86,7 +89,6 @@ PLYIMPACT_LANE_KERNEL void composite_intact_lanes(const CompositeDamageParams& p
   const double beta = p.BETA, alph = p.ALPH, gab = p.GAB;
   const double soft_f = p.TFAIL > 0 ? p.SOFT : 1.0, soft_g = p.TFAIL > 0 ? p.SOFTG : 1.0;
   const double YT0 = p.strength.YT, YC0 = p.strength.YC, SC0 = p.strength.SC;
-  const bool crit55 = p.CRIT == 55;
   // Erosion limits of an intact point (erosion_cause) as thresholds a disabled limit never meets, so
   // the lane body tests them without branches.
   constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -133,18 +135,17 @@ PLYIMPACT_LANE_KERNEL void composite_intact_lanes(const CompositeDamageParams& p
     const double rat = t0 / XT, rac = t0 / XC;
     const double fibre = t0 >= 0 ? rat * rat + beta * tau_bar - 1 : rac * rac - 1;
     const double ft = t0 >= 0 ? fibre : -1.0, fc = t0 >= 0 ? -1.0 : fibre;
-    const double yy = YC * YT;
-    const double m55 = t1 * t1 / yy + tau_bar + (YC - YT) * t1 / yy - 1;
-    const double rt = t1 / YT, hc = t1 / (2 * SC), qc = YC / (2 * SC);
-    const double m54t = rt * rt + tau_bar - 1, m54c = hc * hc + (qc * qc - 1) * t1 / YC + tau_bar - 1;
-    const double m54 = t1 >= 0 ? m54t : m54c;
-    const double matrix = crit55 ? m55 : m54;
+    double matrix;
+    if constexpr (kCrit55) {
+      const double yy = YC * YT;
+      matrix = t1 * t1 / yy + tau_bar + (YC - YT) * t1 / yy - 1;
+    } else {
+      const double rt = t1 / YT, hc = t1 / (2 * SC), qc = YC / (2 * SC);
+      const double m54t = rt * rt + tau_bar - 1, m54c = hc * hc + (qc * qc - 1) * t1 / YC + tau_bar - 1;
+      matrix = t1 >= 0 ? m54t : m54c;
+    }
     const double mt = t1 >= 0 ? matrix : -1.0, mc = t1 >= 0 ? -1.0 : matrix;
-    const double ab = 0.5 * e3, bc = 0.5 * e4, ca = 0.5 * e5;
-    const double qe = e0 * e0 + e1 * e1 + e2 * e2 + e0 * e1 + e1 * e2 + e2 * e0 + ab * ab + bc * bc + ca * ca;
-    const double effective = std::sqrt(4.0 / 3.0 * qe);
-    const double edt = h.element_dt[l], idt = h.initial_dt[l];
-    const double ratio = edt / idt;
+    const double edt = h.element_dt[l];
     double event = ft >= 0 ? 1.0 : 0.0;
     event = fc >= 0 ? 1.0 : event;
     event = mt >= 0 ? 1.0 : event;
@@ -154,9 +155,7 @@ PLYIMPACT_LANE_KERNEL void composite_intact_lanes(const CompositeDamageParams& p
     event = e0 <= DFAILC * k ? 1.0 : event;
     event = std::abs(e1) >= DFAILM * k ? 1.0 : event;
     event = 0.5 * std::abs(e3) >= DFAILS * k ? 1.0 : event;
-    event = effective >= EFS * k ? 1.0 : event;
     event = edt > 0 && edt < TFAIL_STEP ? 1.0 : event;
-    event = edt > 0 && idt > 0 && ratio < TFAIL_RATIO ? 1.0 : event;
     out.event[l] = event;
     out.criteria[0][l] = ft, out.criteria[1][l] = fc, out.criteria[2][l] = mt, out.criteria[3][l] = mc;
     out.eps[0][l] = e0, out.eps[1][l] = e1, out.eps[2][l] = e2, out.eps[3][l] = e3, out.eps[4][l] = e4, out.eps[5][l] = e5;
@@ -170,6 +169,31 @@ PLYIMPACT_LANE_KERNEL void composite_intact_lanes(const CompositeDamageParams& p
     out.s[4][l] = voigt_bilinear_lane(n1, n4, n7, n2, n5, n8, t0, t1, t2, t3, t4, t5);
     out.s[5][l] = voigt_bilinear_lane(n0, n3, n6, n2, n5, n8, t0, t1, t2, t3, t4, t5);
   }
+  if (EFS < kInf || TFAIL_RATIO > -kInf)
+    PLYIMPACT_LANES {
+      const double e0 = out.eps[0][l], e1 = out.eps[1][l], e2 = out.eps[2][l];
+      const double ab = 0.5 * out.eps[3][l], bc = 0.5 * out.eps[4][l], ca = 0.5 * out.eps[5][l];
+      const double qe = e0 * e0 + e1 * e1 + e2 * e2 + e0 * e1 + e1 * e2 + e2 * e0 + ab * ab + bc * bc + ca * ca;
+      const double effective = std::sqrt(4.0 / 3.0 * qe);
+      const double edt = h.element_dt[l], idt = h.initial_dt[l];
+      const double ratio = edt / idt;
+      double event = out.event[l];
+      event = effective >= EFS * h.erosion_scale[l] ? 1.0 : event;
+      event = edt > 0 && idt > 0 && ratio < TFAIL_RATIO ? 1.0 : event;
+      out.event[l] = event;
+    }
+}
+
+// Qo: old material axes (rows a, b, c, global components); R: incremental rotation; s_old: stress
+// in global axes; D: rate of deformation; dt: the step.
+PLYIMPACT_LANE_KERNEL void composite_intact_lanes(const CompositeDamageParams& p, const LaneVec<9>& Qo,
+                                                  const LaneVec<9>& R, const LaneVec<6>& s_old,
+                                                  const LaneVec<6>& D, double dt, const IntactLaneHistory& h,
+                                                  IntactLaneResult& out) {
+  if (p.CRIT == 55)
+    composite_intact_lanes_for<true>(p, Qo, R, s_old, D, dt, h, out);
+  else
+    composite_intact_lanes_for<false>(p, Qo, R, s_old, D, dt, h, out);
 }
 
 }  // namespace plyimpact::material
